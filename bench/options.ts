@@ -1,0 +1,57 @@
+/** Command-line options of `npm run bench`. */
+import { benchmarkScenes, sceneBuilders } from '../scenes/index';
+import { engines } from './engines';
+
+export interface BenchOptions {
+  quick: boolean;
+  engines: string[];
+  scenes: string[];
+  /** scene to profile; null when not profiling */
+  profile: string | null;
+}
+
+export const USAGE = `usage: npm run bench -- [--quick] [--engines a,b] [--scenes x,y] [--profile <scene>]
+  --quick             smaller scenes and fewer steps (under a minute for everything)
+  --engines a,b       engines to run (${engines.map((e) => e.id).join(', ')})
+  --scenes x,y        scenes to run (default: ${benchmarkScenes.join(', ')};
+                      also: ${Object.keys(sceneBuilders)
+                        .filter((s) => !benchmarkScenes.includes(s))
+                        .join(', ')})
+  --profile <scene>   CPU-profile Fulcrum (or --engines) on one scene and print the top functions by self time`;
+
+function list(value: string | undefined, flag: string, known: string[]): string[] {
+  if (!value) throw new Error(`${flag} needs a comma-separated list`);
+  const items = value.split(',').map((s) => s.trim());
+  for (const item of items) {
+    if (!known.includes(item)) throw new Error(`${flag}: unknown '${item}' (known: ${known.join(', ')})`);
+  }
+  return items;
+}
+
+export function parseOptions(argv: string[]): BenchOptions {
+  const options: BenchOptions = {
+    quick: false,
+    engines: engines.map((e) => e.id),
+    scenes: benchmarkScenes,
+    profile: null,
+  };
+  let enginesGiven = false;
+  for (let i = 0; i < argv.length; i++) {
+    const arg = argv[i];
+    if (arg === '--quick') options.quick = true;
+    else if (arg === '--engines') {
+      options.engines = list(
+        argv[++i],
+        arg,
+        engines.map((e) => e.id),
+      );
+      enginesGiven = true;
+    } else if (arg === '--scenes') options.scenes = list(argv[++i], arg, Object.keys(sceneBuilders));
+    else if (arg === '--profile') {
+      options.profile = list(argv[++i], arg, Object.keys(sceneBuilders))[0];
+      options.scenes = [options.profile];
+    } else throw new Error(`unknown option '${arg}'`);
+  }
+  if (options.profile && !enginesGiven) options.engines = ['fulcrum'];
+  return options;
+}

@@ -1,0 +1,153 @@
+/**
+ * One engine on one scene, in its own process: load the engine, check free fall, build the scene,
+ * warm up, then time windows of steps; print one RESULT line of JSON on stdout.
+ * Usage: node --import tsx bench/worker.ts <engine> <scene> [--quick]
+ */
+import { freeFall, sceneBuilders } from '../scenes/index';
+import type { EngineAdapter } from './adapter';
+import { findEngine } from './engines';
+import {
+  allFinite,
+  escapedBodies,
+  FREE_FALL,
+  freeFallPasses,
+  initialTransforms,
+  jointLocalAnchors,
+  maxDisplacement,
+  maxJointSeparation,
+} from './quality';
+import { RESULT_PREFIX, type RunResult, type Timing } from './result';
+
+const DT = 1 / 60;
+/** full runs simulate 10 s: 1 s of warm-up, then 9 windows of 1 s */
+const FULL = { warmup: 60, window: 60, windows: 9, budgetMs: 60_000 };
+const QUICK = { warmup: 10, window: 10, windows: 3, budgetMs: 2_000 };
+const MIN_WINDOWS = 3;
+
+function report(result: RunResult): never {
+  process.stdout.write(`${RESULT_PREFIX}${JSON.stringify(result)}\n`);
+  process.exit(0);
+}
+
+function message(error: unknown): string {
+  return error instanceof Error ? error.message : String(error);
+}
+
+function checkFreeFall(adapter: EngineAdapter): number {
+  const scene = freeFall();
+  adapter.build(scene);
+  for (let i = 0; i < FREE_FALL.steps; i++) adapter.step(FREE_FALL.dt);
+  const t = initialTransforms(scene);
+  adapter.readTransforms(t);
+  adapter.dispose();
+  return scene.bodies[0].position.y - t[1];
+}
+
+function summarize(samples: number[]): Timing {
+  const sorted = [...samples].sort((a, b) => a - b);
+  const mid = sorted.length >> 1;
+  const median = sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
+  return { median, min: sorted[0], max: sorted[sorted.length - 1] };
+}
+
+async function main(): Promise<void> {
+  const [engineId, sceneId] = process.argv.slice(2);
+  const plan = process.argv.includes('--quick') ? QUICK : FULL;
+  const base: RunResult = { engine: engineId, scene: sceneId, ok: false };
+  const builder = sceneBuilders[sceneId];
+  if (!builder) throw new Error(`unknown scene '${sceneId}'`);
+  const scene = builder(plan === QUICK);
+
+  const clock = { start: performance.now(), loaded: 0, checked: 0, built: 0 };
+  let adapter: EngineAdapter;
+  try {
+    adapter = await findEngine(engineId).load();
+    await adapter.init();
+  } catch (error) {
+    report({ ...base, stage: 'load', error: message(error) });
+  }
+  base.settings = adapter.settings;
+  clock.loaded = performance.now();
+
+  let fall: number;
+  try {
+    fall = checkFreeFall(adapter);
+  } catch (error) {
+    report({ ...base, stage: 'free-fall', error: message(error) });
+  }
+  base.freeFall = fall;
+  if (!freeFallPasses(fall)) {
+    report({
+      ...base,
+      stage: 'free-fall',
+      error: `fell ${fall.toFixed(4)} m, expected ${FREE_FALL.min}..${FREE_FALL.max.toFixed(4)}`,
+    });
+  }
+
+  clock.checked = performance.now();
+  try {
+    adapter.build(scene);
+  } catch (error) {
+    report({ ...base, stage: 'build', error: message(error) });
+  }
+  base.settings = adapter.settings;
+  clock.built = performance.now();
+  base.bodies = scene.bodies.length;
+  base.joints = scene.joints.length;
+
+  const transforms = initialTransforms(scene);
+  const anchors = jointLocalAnchors(scene);
+  let worstSeparation = 0;
+  const sample = (): void => {
+    adapter.readTransforms(transforms);
+    if (anchors.length > 0)
+      worstSeparation = Math.max(worstSeparation, maxJointSeparation(anchors, transforms));
+  };
+
+  const samples: number[] = [];
+  let steps = 0;
+  try {
+    for (; steps < plan.warmup; steps++) adapter.step(DT);
+    sample();
+    const settled = transforms.slice();
+    const settledAt = steps * DT;
+    const started = performance.now();
+    for (let w = 0; w < plan.windows; w++) {
+      const t0 = performance.now();
+      for (let i = 0; i < plan.window; i++) adapter.step(DT);
+      samples.push((performance.now() - t0) / plan.window);
+      steps += plan.window;
+      sample();
+      if (w + 1 >= MIN_WINDOWS && performance.now() - started > plan.budgetMs) break;
+    }
+    report({
+      ...base,
+      ok: true,
+      warmupSteps: plan.warmup,
+      stepsPerWindow: plan.window,
+      windows: samples.length,
+      msPerStep: summarize(samples),
+      setupMs: {
+        load: clock.loaded - clock.start,
+        freeFall: clock.checked - clock.loaded,
+        build: clock.built - clock.checked,
+      },
+      quality: {
+        seconds: steps * DT,
+        settledAt,
+        drift: maxDisplacement(scene, settled, transforms),
+        jointSeparation: anchors.length > 0 ? maxJointSeparation(anchors, transforms) : null,
+        maxJointSeparation: anchors.length > 0 ? worstSeparation : null,
+        escaped: scene.containment ? escapedBodies(scene, transforms) : null,
+        finite: allFinite(transforms),
+      },
+    });
+  } catch (error) {
+    report({ ...base, stage: 'step', error: `after ${steps} steps: ${message(error)}` });
+  }
+}
+
+main().catch((error) => {
+  process.stderr.write(`${error instanceof Error ? error.stack : error}\n`);
+  process.exit(1);
+});

@@ -1,0 +1,60 @@
+/** Builds a scene in Fulcrum through its public API (../shared/API.md). */
+import { Shape, World } from '../src/index';
+import type { Scene, SceneShape } from './types';
+
+type WorldDef = NonNullable<ConstructorParameters<typeof World>[0]>;
+type FulcrumBody = ReturnType<World['createBody']>;
+// joints arrive with issue 3; until then a scene with joints cannot be built
+type FulcrumJoint = never;
+
+export interface FulcrumScene {
+  world: World;
+  /** in the order of `scene.bodies` */
+  bodies: FulcrumBody[];
+  /** in the order of `scene.joints` */
+  joints: FulcrumJoint[];
+}
+
+function geometry(shape: SceneShape) {
+  switch (shape.kind) {
+    case 'circle':
+      return Shape.circle(shape.radius, shape.center);
+    case 'box':
+      return Shape.box(shape.halfWidth, shape.halfHeight, shape.center, shape.angle);
+    case 'polygon':
+      return Shape.polygon(shape.points, shape.radius);
+    case 'capsule':
+      return Shape.capsule(shape.p1, shape.p2, shape.radius);
+    case 'segment':
+      return Shape.segment(shape.p1, shape.p2);
+  }
+}
+
+/** only the material fields the scene sets, so Fulcrum's defaults apply to the rest */
+function material(shape: SceneShape): { density?: number; friction?: number; restitution?: number } {
+  const def: { density?: number; friction?: number; restitution?: number } = {};
+  if (shape.density !== undefined) def.density = shape.density;
+  if (shape.friction !== undefined) def.friction = shape.friction;
+  if (shape.restitution !== undefined) def.restitution = shape.restitution;
+  return def;
+}
+
+/** `worldDef` overrides the scene's settings (e.g. `{ enableSleep: false }` for benchmarks) */
+export function buildFulcrumWorld(scene: Scene, worldDef: WorldDef = {}): FulcrumScene {
+  const world = new World({ gravity: scene.gravity, ...worldDef });
+  const bodies = scene.bodies.map((b) => {
+    const body = world.createBody({
+      type: b.type,
+      position: b.position,
+      angle: b.angle ?? 0,
+      linearVelocity: b.linearVelocity ?? { x: 0, y: 0 },
+      angularVelocity: b.angularVelocity ?? 0,
+      bullet: b.bullet ?? false,
+    });
+    for (const shape of b.shapes) body.createShape(geometry(shape), material(shape));
+    return body;
+  });
+  if (scene.joints.length > 0) throw new Error(`scene ${scene.name}: Fulcrum has no joints yet (issue 3)`);
+  const joints: FulcrumJoint[] = [];
+  return { world, bodies, joints };
+}

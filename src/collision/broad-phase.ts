@@ -1,0 +1,251 @@
+import type { Bounds } from '../math/aabb';
+import { DynamicTree, type TreeRayCastVisitor } from './dynamic-tree';
+import { IntList } from './int-list';
+import type { PairSet } from './pair-set';
+
+/** Body type of a proxy: 0 = static, 1 = kinematic, 2 = dynamic. */
+export type ProxyType = 0 | 1 | 2;
+
+export const STATIC_PROXY = 0;
+export const KINEMATIC_PROXY = 1;
+export const DYNAMIC_PROXY = 2;
+
+/** Proxy key = (tree proxy id << 2) | type. */
+export function proxyKeyType(key: number): ProxyType {
+  return (key & 3) as ProxyType;
+}
+
+export function proxyKeyId(key: number): number {
+  return key >> 2;
+}
+
+/** Receives each proxy a ray reaches; see `BroadPhase.rayCast`. */
+export interface BroadPhaseRayCastVisitor {
+  /** Returns -1 to ignore the proxy, 0 to stop, or a fraction in (0, maxFraction) to clip the ray. */
+  rayCastProxy(proxyKey: number, shapeId: number, maxFraction: number): number;
+}
+
+/** Translates tree proxy ids into broad-phase keys for the caller's visitor. */
+class KeyedRayCastVisitor implements TreeRayCastVisitor {
+  target: BroadPhaseRayCastVisitor | null = null;
+  type = 0;
+
+  rayCastProxy(proxyId: number, userData: number, maxFraction: number): number {
+    return this.target!.rayCastProxy((proxyId << 2) | this.type, userData, maxFraction);
+  }
+}
+
+/**
+ * Broad phase: one dynamic tree per body type holding fat boxes (tight box + margin; static proxies
+ * get no margin), and a move buffer of proxies whose pairs must be looked for at the next
+ * `updatePairs`. Pair rules: dynamic proxies pair with every type; static and kinematic proxies pair
+ * only with dynamic ones. Each tree proxy's user data is the shape id.
+ */
+export class BroadPhase {
+  private readonly trees: DynamicTree[] = [new DynamicTree(), new DynamicTree(), new DynamicTree()];
+  /** Per tree: index of each proxy in `moveBuffer`, or -1. Sized to the tree's capacity. */
+  private readonly moveIndex: Int32Array[] = [new Int32Array(0), new Int32Array(0), new Int32Array(0)];
+  /** Proxy keys; -1 marks a proxy destroyed after it was buffered. */
+  private readonly moveBuffer = new IntList(64);
+  private readonly found = new IntList(64);
+  private readonly rayVisitor = new KeyedRayCastVisitor();
+
+  constructor(private readonly aabbMargin: number) {}
+
+  get proxyCount(): number {
+    return this.trees[0].proxyCount + this.trees[1].proxyCount + this.trees[2].proxyCount;
+  }
+
+  /** Number of entries in the move buffer (including ones destroyed since). */
+  get moveCount(): number {
+    return this.moveBuffer.length;
+  }
+
+  /** The tree of one body type, for debug drawing and statistics. Do not modify it directly. */
+  getTree(type: ProxyType): DynamicTree {
+    return this.trees[type];
+  }
+
+  /** Adds a proxy for the tight box and returns its key. */
+  createProxy(
+    minX: number,
+    minY: number,
+    maxX: number,
+    maxY: number,
+    bodyType: ProxyType,
+    shapeId: number,
+    forcePairCreation: boolean,
+  ): number {
+    const m = bodyType === STATIC_PROXY ? 0 : this.aabbMargin;
+    const tree = this.trees[bodyType];
+    const id = tree.createProxy(minX - m, minY - m, maxX + m, maxY + m, shapeId);
+    if (this.moveIndex[bodyType].length < tree.capacity) {
+      const index = new Int32Array(tree.capacity).fill(-1);
+      index.set(this.moveIndex[bodyType]);
+      this.moveIndex[bodyType] = index;
+    }
+    const key = (id << 2) | bodyType;
+    if (bodyType !== STATIC_PROXY || forcePairCreation) this.bufferMove(key);
+    return key;
+  }
+
+  destroyProxy(key: number): void {
+    const type = key & 3;
+    const id = key >> 2;
+    const index = this.moveIndex[type];
+    if (id >= 0 && id < index.length && index[id] >= 0) {
+      this.moveBuffer.set(index[id], -1);
+      index[id] = -1;
+    }
+    this.trees[type].destroyProxy(id);
+  }
+
+  /**
+   * Takes the proxy's new tight box. Returns false (and does nothing) while it stays inside the stored
+   * fat box; otherwise stores a new fat box, buffers the proxy and returns true.
+   */
+  moveProxy(key: number, minX: number, minY: number, maxX: number, maxY: number): boolean {
+    const type = key & 3;
+    const id = key >> 2;
+    const tree = this.trees[type];
+    if (
+      tree.getMinX(id) <= minX &&
+      tree.getMinY(id) <= minY &&
+      tree.getMaxX(id) >= maxX &&
+      tree.getMaxY(id) >= maxY
+    ) {
+      return false;
+    }
+    const m = type === STATIC_PROXY ? 0 : this.aabbMargin;
+    tree.moveProxy(id, minX - m, minY - m, maxX + m, maxY + m);
+    this.bufferMove(key);
+    return true;
+  }
+
+  /** Makes the next `updatePairs` look for new pairs of this proxy. Buffering twice is harmless. */
+  bufferMove(key: number): void {
+    const index = this.moveIndex[key & 3];
+    const id = key >> 2;
+    if (index[id] >= 0) return;
+    index[id] = this.moveBuffer.length;
+    this.moveBuffer.push(key);
+  }
+
+  /**
+   * Appends to `out` every new candidate pair as two ints (smaller shape id, larger shape id), sorted,
+   * then empties the move buffer. A pair is a candidate when the fat boxes overlap, at least one proxy
+   * is buffered, the types may pair, and `existing` does not hold the pair of shape ids.
+   */
+  updatePairs(existing: PairSet, out: IntList): void {
+    const start = out.length;
+    const buffer = this.moveBuffer;
+    for (let i = 0; i < buffer.length; i++) {
+      const key = buffer.data[i];
+      if (key < 0) continue;
+      const type = key & 3;
+      const id = key >> 2;
+      const tree = this.trees[type];
+      const minX = tree.getMinX(id);
+      const minY = tree.getMinY(id);
+      const maxX = tree.getMaxX(id);
+      const maxY = tree.getMaxY(id);
+      const shapeId = tree.getUserData(id);
+      if (type === DYNAMIC_PROXY) {
+        this.findPairs(key, shapeId, minX, minY, maxX, maxY, STATIC_PROXY, existing, out);
+        this.findPairs(key, shapeId, minX, minY, maxX, maxY, KINEMATIC_PROXY, existing, out);
+      }
+      this.findPairs(key, shapeId, minX, minY, maxX, maxY, DYNAMIC_PROXY, existing, out);
+    }
+    for (let i = 0; i < buffer.length; i++) {
+      const key = buffer.data[i];
+      if (key >= 0) this.moveIndex[key & 3][key >> 2] = -1;
+    }
+    buffer.clear();
+    out.sortPairs(start);
+  }
+
+  /** Appends the shape ids of proxies overlapping the box, from trees whose bit (1 << type) is in typeMask. */
+  query(minX: number, minY: number, maxX: number, maxY: number, typeMask: number, out: IntList): void {
+    const found = this.found;
+    for (let type = 0; type < 3; type++) {
+      if ((typeMask & (1 << type)) === 0) continue;
+      const tree = this.trees[type];
+      found.clear();
+      tree.query(minX, minY, maxX, maxY, found);
+      for (let i = 0; i < found.length; i++) out.push(tree.getUserData(found.data[i]));
+    }
+  }
+
+  /**
+   * Casts origin + t·translation, t in [0, maxFraction], through the static, kinematic and dynamic trees
+   * in that order, carrying the clipped fraction from tree to tree. Returns the final max fraction (0
+   * when the visitor stopped the cast). Not re-entrant.
+   */
+  rayCast(
+    originX: number,
+    originY: number,
+    translationX: number,
+    translationY: number,
+    maxFraction: number,
+    visitor: BroadPhaseRayCastVisitor,
+  ): number {
+    const adapter = this.rayVisitor;
+    adapter.target = visitor;
+    for (let type = 0; type < 3 && maxFraction > 0; type++) {
+      adapter.type = type;
+      maxFraction = this.trees[type].rayCast(
+        originX,
+        originY,
+        translationX,
+        translationY,
+        maxFraction,
+        adapter,
+      );
+    }
+    adapter.target = null;
+    return maxFraction;
+  }
+
+  getFatBounds(key: number, out: Bounds): Bounds {
+    return this.trees[key & 3].getBounds(key >> 2, out);
+  }
+
+  getShapeId(key: number): number {
+    return this.trees[key & 3].getUserData(key >> 2);
+  }
+
+  /** Rebuilds the static tree for query quality, e.g. after loading a level. */
+  rebuild(): void {
+    this.trees[STATIC_PROXY].rebuild();
+  }
+
+  private findPairs(
+    key: number,
+    shapeId: number,
+    minX: number,
+    minY: number,
+    maxX: number,
+    maxY: number,
+    type: number,
+    existing: PairSet,
+    out: IntList,
+  ): void {
+    const found = this.found;
+    const tree = this.trees[type];
+    const moved = this.moveIndex[type];
+    found.clear();
+    tree.query(minX, minY, maxX, maxY, found);
+    for (let i = 0; i < found.length; i++) {
+      const id = found.data[i];
+      const otherKey = (id << 2) | type;
+      if (otherKey === key) continue;
+      // When both proxies are buffered, each finds the other (the pair rules are symmetric): only the
+      // one with the larger key reports the pair.
+      if (otherKey > key && moved[id] >= 0) continue;
+      const otherShape = tree.getUserData(id);
+      if (existing.get(shapeId, otherShape) !== -1) continue;
+      if (shapeId < otherShape) out.push2(shapeId, otherShape);
+      else out.push2(otherShape, shapeId);
+    }
+  }
+}

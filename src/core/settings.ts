@@ -1,0 +1,42 @@
+/**
+ * Tuning constants of the solver, in metres and seconds. Lengths and speeds are scaled by the
+ * world's `lengthUnitsPerMeter`, so a world in pixels (say 50 units per metre) behaves the same.
+ */
+export interface Settings {
+  /** overlap tolerated before position correction, keeps contacts persistent */
+  linearSlop: number;
+  /** contact points are created this far apart (speculative contacts) */
+  speculativeDistance: number;
+  /** fat AABB margin of moving proxies in the broad phase */
+  aabbMargin: number;
+  /** largest speed at which the soft contact pushes overlapping shapes apart */
+  contactPushMaxSpeed: number;
+  /** bodies slower than this (and turning slower, see island.ts) for timeToSleep fall asleep */
+  sleepSpeed: number;
+  /** normal approach speed above which restitution is applied */
+  restitutionThreshold: number;
+  /** largest linear speed a body may reach */
+  maxLinearSpeed: number;
+}
+
+export const CONTACT_HERTZ = 30;
+export const CONTACT_DAMPING_RATIO = 10;
+export const JOINT_HERTZ = 60;
+export const JOINT_DAMPING_RATIO = 2;
+export const TIME_TO_SLEEP = 0.5;
+/** largest rotation of a body in one substep, radians; keeps the (cos, sin) integration accurate */
+export const MAX_ROTATION_PER_SUBSTEP = 0.25 * Math.PI;
+
+export function makeSettings(lengthUnitsPerMeter: number): Settings {
+  const u = lengthUnitsPerMeter;
+  const linearSlop = 0.005 * u;
+  return {
+    linearSlop,
+    speculativeDistance: 4 * linearSlop,
+    aabbMargin: 0.1 * u,
+    contactPushMaxSpeed: 3 * u,
+    sleepSpeed: 0.05 * u,
+    restitutionThreshold: 1 * u,
+    maxLinearSpeed: 400 * u,
+  };
+}

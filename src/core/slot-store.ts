@@ -1,0 +1,48 @@
+import { growU8, growU32 } from './grow';
+
+/**
+ * Base of the column stores (bodies, shapes, joints): slots reused through a free list, with a
+ * generation per slot so that a handle can tell its object was destroyed. Subclasses own the
+ * typed-array columns and grow and reset them.
+ */
+export abstract class SlotStore {
+  capacity = 0;
+  /** one past the highest slot ever used */
+  slotCount = 0;
+  liveCount = 0;
+  generation = new Uint32Array(0);
+  alive = new Uint8Array(0);
+  private freeSlots: number[] = [];
+
+  allocate(): number {
+    let slot: number;
+    if (this.freeSlots.length > 0) {
+      // last freed, first reused: the order is defined by the call history alone
+      slot = this.freeSlots.pop()!;
+    } else {
+      if (this.slotCount === this.capacity) {
+        const capacity = Math.max(16, this.capacity * 2);
+        this.generation = growU32(this.generation, capacity);
+        this.alive = growU8(this.alive, capacity);
+        this.growColumns(capacity);
+        this.capacity = capacity;
+      }
+      slot = this.slotCount++;
+    }
+    this.alive[slot] = 1;
+    this.liveCount++;
+    this.resetSlot(slot);
+    return slot;
+  }
+
+  free(slot: number): void {
+    this.alive[slot] = 0;
+    this.generation[slot]++;
+    this.liveCount--;
+    this.resetSlot(slot);
+    this.freeSlots.push(slot);
+  }
+
+  protected abstract growColumns(capacity: number): void;
+  protected abstract resetSlot(slot: number): void;
+}

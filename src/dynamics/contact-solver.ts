@@ -1,0 +1,526 @@
+import { growF64, growI32 } from '../core/grow';
+import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from './body-store';
+import type { Softness } from './softness';
+
+// Layout of one contact constraint in `ContactConstraints.data` (doubles).
+const C_NX = 0;
+const C_NY = 1;
+const C_FRICTION = 2;
+const C_RESTITUTION = 3;
+const C_MA = 4;
+const C_IA = 5;
+const C_MB = 6;
+const C_IB = 7;
+const C_COUNT = 8;
+const C_BIAS_RATE = 9;
+const C_MASS_SCALE = 10;
+const C_IMPULSE_SCALE = 11;
+/** 2x2 normal mass matrix K of two-point manifolds and its inverse; C_BLOCK = 1 when K is well conditioned */
+const C_K11 = 12;
+const C_K12 = 13;
+const C_K22 = 14;
+const C_I11 = 15;
+const C_I12 = 16;
+const C_I22 = 17;
+const C_BLOCK = 18;
+const C_POINTS = 19;
+/** K's condition number above which the two points are solved one after the other */
+const MAX_CONDITION = 1000;
+// Per point, relative to its base.
+const P_RAX = 0;
+const P_RAY = 1;
+const P_RBX = 2;
+const P_RBY = 3;
+/** separation at the start of the step minus the anchors' offset along the normal */
+const P_ADJ_SEP = 4;
+const P_NMASS = 5;
+const P_TMASS = 6;
+const P_NIMP = 7;
+const P_TIMP = 8;
+const P_MAX_NIMP = 9;
+/** normal relative velocity before the step (negative when approaching) */
+const P_REL_VEL = 10;
+const P_STRIDE = 11;
+export const CONSTRAINT_STRIDE = C_POINTS + 2 * P_STRIDE;
+
+/** Contact constraints of one step, packed one block per touching contact (no objects). */
+export class ContactConstraints {
+  count = 0;
+  capacity = 0;
+  data = new Float64Array(0);
+  /** body A, body B and contact slot of each constraint */
+  ids = new Int32Array(0);
+
+  reserve(n: number): void {
+    if (n <= this.capacity) return;
+    let capacity = Math.max(64, this.capacity);
+    while (capacity < n) capacity *= 2;
+    this.data = growF64(this.data, capacity * CONSTRAINT_STRIDE);
+    this.ids = growI32(this.ids, capacity * 3);
+    this.capacity = capacity;
+  }
+}
+
+/**
+ * Writes constraint `i` for a contact. Anchors are taken relative to the centres of mass at the
+ * start of the step and stay fixed through the substeps; the separation is updated from the bodies'
+ * accumulated motion instead of recomputing the manifold.
+ */
+export function prepareContact(
+  cc: ContactConstraints,
+  i: number,
+  contact: number,
+  bodyA: number,
+  bodyB: number,
+  mA: number,
+  iA: number,
+  mB: number,
+  iB: number,
+  cAx: number,
+  cAy: number,
+  cBx: number,
+  cBy: number,
+  state: Float64Array,
+  nx: number,
+  ny: number,
+  friction: number,
+  restitution: number,
+  soft: Softness,
+  pointCount: number,
+  pointX: Float64Array,
+  pointY: Float64Array,
+  separation: Float64Array,
+  normalImpulse: Float64Array,
+  tangentImpulse: Float64Array,
+): void {
+  const d = cc.data;
+  const base = i * CONSTRAINT_STRIDE;
+  cc.ids[i * 3] = bodyA;
+  cc.ids[i * 3 + 1] = bodyB;
+  cc.ids[i * 3 + 2] = contact;
+  d[base + C_NX] = nx;
+  d[base + C_NY] = ny;
+  d[base + C_FRICTION] = friction;
+  d[base + C_RESTITUTION] = restitution;
+  d[base + C_MA] = mA;
+  d[base + C_IA] = iA;
+  d[base + C_MB] = mB;
+  d[base + C_IB] = iB;
+  d[base + C_COUNT] = pointCount;
+  d[base + C_BIAS_RATE] = soft.biasRate;
+  d[base + C_MASS_SCALE] = soft.massScale;
+  d[base + C_IMPULSE_SCALE] = soft.impulseScale;
+  const sa = bodyA * STATE_STRIDE;
+  const sb = bodyB * STATE_STRIDE;
+  const vAx = state[sa + S_VX];
+  const vAy = state[sa + S_VY];
+  const wA = state[sa + S_W];
+  const vBx = state[sb + S_VX];
+  const vBy = state[sb + S_VY];
+  const wB = state[sb + S_W];
+  const tx = ny;
+  const ty = -nx;
+  for (let j = 0; j < pointCount; j++) {
+    const k = contact * 2 + j;
+    const p = base + C_POINTS + j * P_STRIDE;
+    const rAx = pointX[k] - cAx;
+    const rAy = pointY[k] - cAy;
+    const rBx = pointX[k] - cBx;
+    const rBy = pointY[k] - cBy;
+    d[p + P_RAX] = rAx;
+    d[p + P_RAY] = rAy;
+    d[p + P_RBX] = rBx;
+    d[p + P_RBY] = rBy;
+    d[p + P_ADJ_SEP] = separation[k] - ((rBx - rAx) * nx + (rBy - rAy) * ny);
+    const rnA = rAx * ny - rAy * nx;
+    const rnB = rBx * ny - rBy * nx;
+    const kN = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+    d[p + P_NMASS] = kN > 0 ? 1 / kN : 0;
+    const rtA = rAx * ty - rAy * tx;
+    const rtB = rBx * ty - rBy * tx;
+    const kT = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
+    d[p + P_TMASS] = kT > 0 ? 1 / kT : 0;
+    d[p + P_NIMP] = normalImpulse[k];
+    d[p + P_TIMP] = tangentImpulse[k];
+    d[p + P_MAX_NIMP] = 0;
+    const dvx = vBx - wB * rBy - vAx + wA * rAy;
+    const dvy = vBy + wB * rBx - vAy - wA * rAx;
+    d[p + P_REL_VEL] = dvx * nx + dvy * ny;
+  }
+  d[base + C_BLOCK] = 0;
+  if (pointCount === 2) {
+    const p1 = base + C_POINTS;
+    const p2 = p1 + P_STRIDE;
+    const rn1A = d[p1 + P_RAX] * ny - d[p1 + P_RAY] * nx;
+    const rn1B = d[p1 + P_RBX] * ny - d[p1 + P_RBY] * nx;
+    const rn2A = d[p2 + P_RAX] * ny - d[p2 + P_RAY] * nx;
+    const rn2B = d[p2 + P_RBX] * ny - d[p2 + P_RBY] * nx;
+    const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+    const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+    const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+    const det = k11 * k22 - k12 * k12;
+    if (k11 * k11 < MAX_CONDITION * det) {
+      d[base + C_K11] = k11;
+      d[base + C_K12] = k12;
+      d[base + C_K22] = k22;
+      const invDet = 1 / det;
+      d[base + C_I11] = k22 * invDet;
+      d[base + C_I12] = -k12 * invDet;
+      d[base + C_I22] = k11 * invDet;
+      d[base + C_BLOCK] = 1;
+    }
+  }
+}
+
+/** Applies the impulses kept from the previous substep (or step) so the solver starts near the answer. */
+export function warmStartContacts(cc: ContactConstraints, state: Float64Array): void {
+  const d = cc.data;
+  const ids = cc.ids;
+  for (let i = 0, n = cc.count; i < n; i++) {
+    const base = i * CONSTRAINT_STRIDE;
+    const sa = ids[i * 3] * STATE_STRIDE;
+    const sb = ids[i * 3 + 1] * STATE_STRIDE;
+    const mA = d[base + C_MA];
+    const iA = d[base + C_IA];
+    const mB = d[base + C_MB];
+    const iB = d[base + C_IB];
+    const nx = d[base + C_NX];
+    const ny = d[base + C_NY];
+    let vAx = state[sa + S_VX];
+    let vAy = state[sa + S_VY];
+    let wA = state[sa + S_W];
+    let vBx = state[sb + S_VX];
+    let vBy = state[sb + S_VY];
+    let wB = state[sb + S_W];
+    const count = d[base + C_COUNT];
+    for (let j = 0; j < count; j++) {
+      const p = base + C_POINTS + j * P_STRIDE;
+      const ni = d[p + P_NIMP];
+      const ti = d[p + P_TIMP];
+      // P = ni * n + ti * t, with t = (ny, -nx)
+      const Px = ni * nx + ti * ny;
+      const Py = ni * ny - ti * nx;
+      wA -= iA * (d[p + P_RAX] * Py - d[p + P_RAY] * Px);
+      vAx -= mA * Px;
+      vAy -= mA * Py;
+      wB += iB * (d[p + P_RBX] * Py - d[p + P_RBY] * Px);
+      vBx += mB * Px;
+      vBy += mB * Py;
+    }
+    state[sa + S_VX] = vAx;
+    state[sa + S_VY] = vAy;
+    state[sa + S_W] = wA;
+    state[sb + S_VX] = vBx;
+    state[sb + S_VY] = vBy;
+    state[sb + S_W] = wB;
+  }
+}
+
+// Per-point scratch of the normal solve: bias, mass scale and impulse scale of the soft constraint.
+let bias1 = 0;
+let mScale1 = 1;
+let iScale1 = 0;
+
+/** Sets bias1/mScale1/iScale1 for a point at separation `s` (speculative, soft or relaxed). */
+function softTerms(
+  s: number,
+  invH: number,
+  useBias: boolean,
+  biasRate: number,
+  massScale: number,
+  impulseScale: number,
+  maxPushSpeed: number,
+): void {
+  if (s > 0) {
+    // speculative: the shapes may approach until they touch, not further
+    bias1 = s * invH;
+    mScale1 = 1;
+    iScale1 = 0;
+  } else if (useBias) {
+    bias1 = Math.max(biasRate * s, -maxPushSpeed);
+    mScale1 = massScale;
+    iScale1 = impulseScale;
+  } else {
+    bias1 = 0;
+    mScale1 = 1;
+    iScale1 = 0;
+  }
+}
+
+/**
+ * One Gauss-Seidel pass over all contacts. With `useBias` the soft constraint pushes overlapping
+ * shapes apart (at most `maxPushSpeed`); without it (relax pass) only velocities are made consistent,
+ * which removes the energy the push added. The two points of a manifold are solved together as a
+ * 2x2 block (a small LCP, by trying its four cases), so neither point is favoured by the order of
+ * solving: a symmetric stack gets symmetric impulses and does not start to sway.
+ */
+export function solveContacts(
+  cc: ContactConstraints,
+  state: Float64Array,
+  invH: number,
+  useBias: boolean,
+  maxPushSpeed: number,
+): void {
+  const d = cc.data;
+  const ids = cc.ids;
+  for (let i = 0, n = cc.count; i < n; i++) {
+    const base = i * CONSTRAINT_STRIDE;
+    const sa = ids[i * 3] * STATE_STRIDE;
+    const sb = ids[i * 3 + 1] * STATE_STRIDE;
+    const mA = d[base + C_MA];
+    const iA = d[base + C_IA];
+    const mB = d[base + C_MB];
+    const iB = d[base + C_IB];
+    const nx = d[base + C_NX];
+    const ny = d[base + C_NY];
+    const biasRate = d[base + C_BIAS_RATE];
+    const massScale = d[base + C_MASS_SCALE];
+    const impulseScale = d[base + C_IMPULSE_SCALE];
+    let vAx = state[sa + S_VX];
+    let vAy = state[sa + S_VY];
+    let wA = state[sa + S_W];
+    let vBx = state[sb + S_VX];
+    let vBy = state[sb + S_VY];
+    let wB = state[sb + S_W];
+    const dpx = state[sb + S_DPX] - state[sa + S_DPX];
+    const dpy = state[sb + S_DPY] - state[sa + S_DPY];
+    const qAc = state[sa + S_DQC];
+    const qAs = state[sa + S_DQS];
+    const qBc = state[sb + S_DQC];
+    const qBs = state[sb + S_DQS];
+    const count = d[base + C_COUNT];
+
+    if (d[base + C_BLOCK] === 1) {
+      const p1 = base + C_POINTS;
+      const p2 = p1 + P_STRIDE;
+      const r1Ax = d[p1 + P_RAX];
+      const r1Ay = d[p1 + P_RAY];
+      const r1Bx = d[p1 + P_RBX];
+      const r1By = d[p1 + P_RBY];
+      const r2Ax = d[p2 + P_RAX];
+      const r2Ay = d[p2 + P_RAY];
+      const r2Bx = d[p2 + P_RBX];
+      const r2By = d[p2 + P_RBY];
+      // current separations from the motion accumulated since the step began
+      const s1 =
+        (dpx + (qBc * r1Bx - qBs * r1By) - (qAc * r1Ax - qAs * r1Ay)) * nx +
+        (dpy + (qBs * r1Bx + qBc * r1By) - (qAs * r1Ax + qAc * r1Ay)) * ny +
+        d[p1 + P_ADJ_SEP];
+      const s2 =
+        (dpx + (qBc * r2Bx - qBs * r2By) - (qAc * r2Ax - qAs * r2Ay)) * nx +
+        (dpy + (qBs * r2Bx + qBc * r2By) - (qAs * r2Ax + qAc * r2Ay)) * ny +
+        d[p2 + P_ADJ_SEP];
+      softTerms(s1, invH, useBias, biasRate, massScale, impulseScale, maxPushSpeed);
+      const b1 = bias1;
+      const ms1 = mScale1;
+      const is1 = iScale1;
+      softTerms(s2, invH, useBias, biasRate, massScale, impulseScale, maxPushSpeed);
+      const b2 = bias1;
+      const ms2 = mScale1;
+      const is2 = iScale1;
+      const vn1 = (vBx - wB * r1By - vAx + wA * r1Ay) * nx + (vBy + wB * r1Bx - vAy - wA * r1Ax) * ny;
+      const vn2 = (vBx - wB * r2By - vAx + wA * r2Ay) * nx + (vBy + wB * r2Bx - vAy - wA * r2Ax) * ny;
+      const l1 = d[p1 + P_NIMP];
+      const l2 = d[p2 + P_NIMP];
+      const k11 = d[base + C_K11];
+      const k12 = d[base + C_K12];
+      const k22 = d[base + C_K22];
+      // Soft block solve: find new impulses x >= 0 with vn' + b + G x = 0 on pushing points, where
+      // vn' = vn + K (x - l) and G = diag(is/ms * Kii) is each point's compliance. This is exactly the
+      // fixed point of the one-point soft update, so the block and the one-point paths agree.
+      const g1 = (is1 / ms1) * k11;
+      const g2 = (is2 / ms2) * k22;
+      const a11 = k11 + g1;
+      const a22 = k22 + g2;
+      const r1 = -(vn1 + b1) - g1 * l1;
+      const r2 = -(vn2 + b2) - g2 * l2;
+      const det = a11 * a22 - k12 * k12;
+      // case 1: both points push
+      let x1 = l1 + (a22 * r1 - k12 * r2) / det;
+      let x2 = l2 + (a11 * r2 - k12 * r1) / det;
+      if (x1 < 0 || x2 < 0) {
+        // case 2: only point 1 pushes; point 2 must then be separating
+        x1 = l1 + (r1 + k12 * l2) / a11;
+        x2 = 0;
+        if (x1 < 0 || vn2 + b2 + k12 * (x1 - l1) - k22 * l2 < 0) {
+          // case 3: only point 2 pushes
+          x1 = 0;
+          x2 = l2 + (r2 + k12 * l1) / a22;
+          if (x2 < 0 || vn1 + b1 + k12 * (x2 - l2) - k11 * l1 < 0) {
+            // case 4: neither
+            x2 = 0;
+          }
+        }
+      }
+      const dl1 = x1 - l1;
+      const dl2 = x2 - l2;
+      d[p1 + P_NIMP] = x1;
+      d[p2 + P_NIMP] = x2;
+      d[p1 + P_MAX_NIMP] = Math.max(d[p1 + P_MAX_NIMP], dl1);
+      d[p2 + P_MAX_NIMP] = Math.max(d[p2 + P_MAX_NIMP], dl2);
+      const Px = (dl1 + dl2) * nx;
+      const Py = (dl1 + dl2) * ny;
+      vAx -= mA * Px;
+      vAy -= mA * Py;
+      wA -= iA * ((r1Ax * ny - r1Ay * nx) * dl1 + (r2Ax * ny - r2Ay * nx) * dl2);
+      vBx += mB * Px;
+      vBy += mB * Py;
+      wB += iB * ((r1Bx * ny - r1By * nx) * dl1 + (r2Bx * ny - r2By * nx) * dl2);
+    } else {
+      for (let j = 0; j < count; j++) {
+        const p = base + C_POINTS + j * P_STRIDE;
+        const rAx = d[p + P_RAX];
+        const rAy = d[p + P_RAY];
+        const rBx = d[p + P_RBX];
+        const rBy = d[p + P_RBY];
+        const ddx = dpx + (qBc * rBx - qBs * rBy) - (qAc * rAx - qAs * rAy);
+        const ddy = dpy + (qBs * rBx + qBc * rBy) - (qAs * rAx + qAc * rAy);
+        softTerms(
+          ddx * nx + ddy * ny + d[p + P_ADJ_SEP],
+          invH,
+          useBias,
+          biasRate,
+          massScale,
+          impulseScale,
+          maxPushSpeed,
+        );
+        const dvx = vBx - wB * rBy - vAx + wA * rAy;
+        const dvy = vBy + wB * rBx - vAy - wA * rAx;
+        const vn = dvx * nx + dvy * ny;
+        const old = d[p + P_NIMP];
+        let impulse = -d[p + P_NMASS] * mScale1 * (vn + bias1) - iScale1 * old;
+        const next = Math.max(old + impulse, 0);
+        impulse = next - old;
+        d[p + P_NIMP] = next;
+        d[p + P_MAX_NIMP] = Math.max(d[p + P_MAX_NIMP], impulse);
+        const Px = impulse * nx;
+        const Py = impulse * ny;
+        vAx -= mA * Px;
+        vAy -= mA * Py;
+        wA -= iA * (rAx * Py - rAy * Px);
+        vBx += mB * Px;
+        vBy += mB * Py;
+        wB += iB * (rBx * Py - rBy * Px);
+      }
+    }
+
+    const friction = d[base + C_FRICTION];
+    const tx = ny;
+    const ty = -nx;
+    for (let j = 0; j < count; j++) {
+      const p = base + C_POINTS + j * P_STRIDE;
+      const rAx = d[p + P_RAX];
+      const rAy = d[p + P_RAY];
+      const rBx = d[p + P_RBX];
+      const rBy = d[p + P_RBY];
+      const dvx = vBx - wB * rBy - vAx + wA * rAy;
+      const dvy = vBy + wB * rBx - vAy - wA * rAx;
+      const vt = dvx * tx + dvy * ty;
+      const maxFriction = friction * d[p + P_NIMP];
+      const old = d[p + P_TIMP];
+      const next = Math.max(-maxFriction, Math.min(old - d[p + P_TMASS] * vt, maxFriction));
+      const impulse = next - old;
+      d[p + P_TIMP] = next;
+      const Px = impulse * tx;
+      const Py = impulse * ty;
+      vAx -= mA * Px;
+      vAy -= mA * Py;
+      wA -= iA * (rAx * Py - rAy * Px);
+      vBx += mB * Px;
+      vBy += mB * Py;
+      wB += iB * (rBx * Py - rBy * Px);
+    }
+    state[sa + S_VX] = vAx;
+    state[sa + S_VY] = vAy;
+    state[sa + S_W] = wA;
+    state[sb + S_VX] = vBx;
+    state[sb + S_VY] = vBy;
+    state[sb + S_W] = wB;
+  }
+}
+
+/**
+ * Restitution after the substeps: points that approached faster than the threshold and carried an
+ * impulse get a normal velocity of -restitution times their approach velocity.
+ */
+export function applyRestitution(cc: ContactConstraints, state: Float64Array, threshold: number): void {
+  const d = cc.data;
+  const ids = cc.ids;
+  for (let i = 0, n = cc.count; i < n; i++) {
+    const base = i * CONSTRAINT_STRIDE;
+    const restitution = d[base + C_RESTITUTION];
+    if (restitution === 0) continue;
+    const sa = ids[i * 3] * STATE_STRIDE;
+    const sb = ids[i * 3 + 1] * STATE_STRIDE;
+    const mA = d[base + C_MA];
+    const iA = d[base + C_IA];
+    const mB = d[base + C_MB];
+    const iB = d[base + C_IB];
+    const nx = d[base + C_NX];
+    const ny = d[base + C_NY];
+    let vAx = state[sa + S_VX];
+    let vAy = state[sa + S_VY];
+    let wA = state[sa + S_W];
+    let vBx = state[sb + S_VX];
+    let vBy = state[sb + S_VY];
+    let wB = state[sb + S_W];
+    const count = d[base + C_COUNT];
+    for (let j = 0; j < count; j++) {
+      const p = base + C_POINTS + j * P_STRIDE;
+      const relVel = d[p + P_REL_VEL];
+      if (relVel > -threshold || d[p + P_MAX_NIMP] === 0) continue;
+      const rAx = d[p + P_RAX];
+      const rAy = d[p + P_RAY];
+      const rBx = d[p + P_RBX];
+      const rBy = d[p + P_RBY];
+      const dvx = vBx - wB * rBy - vAx + wA * rAy;
+      const dvy = vBy + wB * rBx - vAy - wA * rAx;
+      const vn = dvx * nx + dvy * ny;
+      const old = d[p + P_NIMP];
+      let impulse = -d[p + P_NMASS] * (vn + restitution * relVel);
+      const next = Math.max(old + impulse, 0);
+      impulse = next - old;
+      d[p + P_NIMP] = next;
+      d[p + P_MAX_NIMP] = Math.max(d[p + P_MAX_NIMP], impulse);
+      const Px = impulse * nx;
+      const Py = impulse * ny;
+      vAx -= mA * Px;
+      vAy -= mA * Py;
+      wA -= iA * (rAx * Py - rAy * Px);
+      vBx += mB * Px;
+      vBy += mB * Py;
+      wB += iB * (rBx * Py - rBy * Px);
+    }
+    state[sa + S_VX] = vAx;
+    state[sa + S_VY] = vAy;
+    state[sa + S_W] = wA;
+    state[sb + S_VX] = vBx;
+    state[sb + S_VY] = vBy;
+    state[sb + S_W] = wB;
+  }
+}
+
+/** Copies the impulses back to the contacts for warm starting next step and for hit events. */
+export function storeImpulses(
+  cc: ContactConstraints,
+  normalImpulse: Float64Array,
+  tangentImpulse: Float64Array,
+  maxNormalImpulse: Float64Array,
+  approachSpeed: Float64Array,
+): void {
+  const d = cc.data;
+  const ids = cc.ids;
+  for (let i = 0, n = cc.count; i < n; i++) {
+    const base = i * CONSTRAINT_STRIDE;
+    const contact = ids[i * 3 + 2];
+    const count = d[base + C_COUNT];
+    for (let j = 0; j < count; j++) {
+      const p = base + C_POINTS + j * P_STRIDE;
+      const k = contact * 2 + j;
+      normalImpulse[k] = d[p + P_NIMP];
+      tangentImpulse[k] = d[p + P_TIMP];
+      maxNormalImpulse[k] = d[p + P_MAX_NIMP];
+      approachSpeed[k] = -d[p + P_REL_VEL];
+    }
+  }
+}

@@ -1,0 +1,70 @@
+import { IntList } from '../collision/int-list';
+import { growF64 } from '../core/grow';
+import { CONTACT_SENSOR, type ContactStore } from './contact-store';
+import { SHAPE_CONTACT_EVENTS, SHAPE_SENSOR, SHAPE_SENSOR_EVENTS, type ShapeStore } from './shape-store';
+
+/**
+ * Events of one step as plain numbers, recorded without allocation while the step runs and turned
+ * into objects only after it, for the handlers and the readable arrays.
+ */
+export class EventBuffers {
+  /** contact slot, shape A, shape B per begin */
+  readonly contactBegin = new IntList();
+  /** shape A, shape B per end */
+  readonly contactEnd = new IntList();
+  /** sensor shape, visitor shape */
+  readonly sensorBegin = new IntList();
+  readonly sensorEnd = new IntList();
+  /** shape A, shape B per hit; the numbers are in hitData */
+  readonly hitShapes = new IntList();
+  /** point x, y, normal x, y, approach speed per hit */
+  hitData = new Float64Array(5 * 16);
+
+  clear(): void {
+    this.contactBegin.clear();
+    this.contactEnd.clear();
+    this.sensorBegin.clear();
+    this.sensorEnd.clear();
+    this.hitShapes.clear();
+  }
+
+  recordBegin(contacts: ContactStore, c: number, shapes: ShapeStore): void {
+    const a = contacts.shapeA[c];
+    const b = contacts.shapeB[c];
+    if ((contacts.flags[c] & CONTACT_SENSOR) !== 0) {
+      this.recordSensor(this.sensorBegin, shapes, a, b);
+    } else if (((shapes.flags[a] | shapes.flags[b]) & SHAPE_CONTACT_EVENTS) !== 0) {
+      this.contactBegin.push(c);
+      this.contactBegin.push2(a, b);
+    }
+  }
+
+  recordEnd(contacts: ContactStore, c: number, shapes: ShapeStore): void {
+    const a = contacts.shapeA[c];
+    const b = contacts.shapeB[c];
+    if ((contacts.flags[c] & CONTACT_SENSOR) !== 0) {
+      this.recordSensor(this.sensorEnd, shapes, a, b);
+    } else if (((shapes.flags[a] | shapes.flags[b]) & SHAPE_CONTACT_EVENTS) !== 0) {
+      this.contactEnd.push2(a, b);
+    }
+  }
+
+  private recordSensor(list: IntList, shapes: ShapeStore, a: number, b: number): void {
+    const sensor = (shapes.flags[a] & SHAPE_SENSOR) !== 0 ? a : b;
+    const visitor = sensor === a ? b : a;
+    if ((shapes.flags[sensor] & shapes.flags[visitor] & SHAPE_SENSOR_EVENTS) !== 0)
+      list.push2(sensor, visitor);
+  }
+
+  recordHit(a: number, b: number, px: number, py: number, nx: number, ny: number, speed: number): void {
+    const i = this.hitShapes.length / 2;
+    if ((i + 1) * 5 > this.hitData.length) this.hitData = growF64(this.hitData, this.hitData.length * 2);
+    const d = this.hitData;
+    d[i * 5] = px;
+    d[i * 5 + 1] = py;
+    d[i * 5 + 2] = nx;
+    d[i * 5 + 3] = ny;
+    d[i * 5 + 4] = speed;
+    this.hitShapes.push2(a, b);
+  }
+}

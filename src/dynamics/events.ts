@@ -1,0 +1,227 @@
+import type { IntList } from '../collision/int-list';
+import { fail } from '../core/errors';
+import type { Vec2 } from '../math/vec2';
+import type { Body } from './body';
+import type { ShapeHandle } from './shape';
+import type { World } from './world';
+
+export interface ContactBeginEvent {
+  shapeA: ShapeHandle;
+  shapeB: ShapeHandle;
+  bodyA: Body;
+  bodyB: Body;
+  /** world unit normal from A to B */
+  normal: Vec2;
+  /** world contact points (one or two) */
+  points: Vec2[];
+}
+
+export interface ContactEndEvent {
+  shapeA: ShapeHandle;
+  shapeB: ShapeHandle;
+  bodyA: Body;
+  bodyB: Body;
+}
+
+export interface ContactHitEvent {
+  shapeA: ShapeHandle;
+  shapeB: ShapeHandle;
+  bodyA: Body;
+  bodyB: Body;
+  point: Vec2;
+  normal: Vec2;
+  /** normal speed at which the shapes approached, m/s */
+  approachSpeed: number;
+}
+
+export interface SensorEvent {
+  sensorShape: ShapeHandle;
+  visitorShape: ShapeHandle;
+}
+
+export interface StepEvent {
+  dt: number;
+}
+
+export interface BodyEvent {
+  body: Body;
+}
+
+export interface WorldEventMap {
+  contactBegin: ContactBeginEvent;
+  contactEnd: ContactEndEvent;
+  contactHit: ContactHitEvent;
+  sensorBegin: SensorEvent;
+  sensorEnd: SensorEvent;
+  preStep: StepEvent;
+  postStep: StepEvent;
+  sleep: BodyEvent;
+  wake: BodyEvent;
+}
+
+/** The events of the last step as arrays. */
+export interface WorldEvents {
+  contactBegin: ContactBeginEvent[];
+  contactEnd: ContactEndEvent[];
+  contactHit: ContactHitEvent[];
+  sensorBegin: SensorEvent[];
+  sensorEnd: SensorEvent[];
+  sleep: BodyEvent[];
+  wake: BodyEvent[];
+}
+
+type Handler = (e: never) => void;
+
+const EVENT_NAMES = [
+  'contactBegin',
+  'contactEnd',
+  'contactHit',
+  'sensorBegin',
+  'sensorEnd',
+  'preStep',
+  'postStep',
+  'sleep',
+  'wake',
+] as const;
+
+/**
+ * Turns the step's recorded numbers into event objects, lazily: only when a handler listens or the
+ * arrays are read. Handlers run after the step, so they may create and destroy bodies.
+ */
+export class EventDispatcher {
+  private readonly handlers = new Map<string, Handler[]>();
+  private cache: WorldEvents | null = null;
+  private sleepEvents: BodyEvent[] = [];
+  private wakeEvents: BodyEvent[] = [];
+
+  constructor(private readonly world: World) {}
+
+  on(event: string, handler: Handler): () => void {
+    if (!(EVENT_NAMES as readonly string[]).includes(event))
+      fail('event', event, `one of ${EVENT_NAMES.join(', ')}`);
+    if (typeof handler !== 'function') fail('handler', handler, 'a function');
+    let list = this.handlers.get(event);
+    if (!list) {
+      list = [];
+      this.handlers.set(event, list);
+    }
+    list.push(handler);
+    return () => {
+      const l = this.handlers.get(event);
+      const i = l ? l.indexOf(handler) : -1;
+      if (l && i >= 0) l.splice(i, 1);
+    };
+  }
+
+  emitStep(event: 'preStep' | 'postStep', dt: number): void {
+    const list = this.handlers.get(event);
+    if (!list || list.length === 0) return;
+    const e = { dt };
+    for (const h of list.slice()) (h as (e: StepEvent) => void)(e);
+  }
+
+  /** Called at the end of step(): drops the old arrays and runs the handlers. */
+  deliver(): void {
+    this.cache = null;
+    // sleep and wake also happen between steps (setAwake, setters): they are taken here and cleared
+    const islands = this.world.core.islands;
+    this.sleepEvents = this.bodyEvents(islands.slept);
+    this.wakeEvents = this.bodyEvents(islands.woken);
+    islands.slept.clear();
+    islands.woken.clear();
+    let any = false;
+    for (const list of this.handlers.values()) if (list.length > 0) any = true;
+    if (!any) return;
+    const events = this.current();
+    this.run('contactBegin', events.contactBegin);
+    this.run('contactEnd', events.contactEnd);
+    this.run('contactHit', events.contactHit);
+    this.run('sensorBegin', events.sensorBegin);
+    this.run('sensorEnd', events.sensorEnd);
+    this.run('sleep', events.sleep);
+    this.run('wake', events.wake);
+  }
+
+  private run(event: string, items: readonly unknown[]): void {
+    const list = this.handlers.get(event);
+    if (!list || list.length === 0 || items.length === 0) return;
+    const handlers = list.slice();
+    for (const item of items) for (const h of handlers) (h as (e: unknown) => void)(item);
+  }
+
+  current(): WorldEvents {
+    if (this.cache) return this.cache;
+    const world = this.world;
+    const core = world.core;
+    const buf = core.events;
+    const shape = (s: number) => world.shapeHandles[s]!;
+    const contactBegin: ContactBeginEvent[] = [];
+    const contacts = core.contacts;
+    for (let i = 0; i < buf.contactBegin.length; i += 3) {
+      const c = buf.contactBegin.data[i];
+      const a = shape(buf.contactBegin.data[i + 1]);
+      const b = shape(buf.contactBegin.data[i + 2]);
+      const points: Vec2[] = [];
+      for (let j = 0; j < contacts.pointCount[c]; j++) {
+        points.push({ x: contacts.pointX[c * 2 + j], y: contacts.pointY[c * 2 + j] });
+      }
+      contactBegin.push({
+        shapeA: a,
+        shapeB: b,
+        bodyA: a.body,
+        bodyB: b.body,
+        normal: { x: contacts.normalX[c], y: contacts.normalY[c] },
+        points,
+      });
+    }
+    const contactEnd: ContactEndEvent[] = [];
+    for (let i = 0; i < buf.contactEnd.length; i += 2) {
+      const a = shape(buf.contactEnd.data[i]);
+      const b = shape(buf.contactEnd.data[i + 1]);
+      contactEnd.push({ shapeA: a, shapeB: b, bodyA: a.body, bodyB: b.body });
+    }
+    const contactHit: ContactHitEvent[] = [];
+    for (let i = 0; i < buf.hitShapes.length; i += 2) {
+      const a = shape(buf.hitShapes.data[i]);
+      const b = shape(buf.hitShapes.data[i + 1]);
+      const k = (i / 2) * 5;
+      const d = buf.hitData;
+      contactHit.push({
+        shapeA: a,
+        shapeB: b,
+        bodyA: a.body,
+        bodyB: b.body,
+        point: { x: d[k], y: d[k + 1] },
+        normal: { x: d[k + 2], y: d[k + 3] },
+        approachSpeed: d[k + 4],
+      });
+    }
+    const sensors = (list: IntList): SensorEvent[] => {
+      const out: SensorEvent[] = [];
+      for (let i = 0; i < list.length; i += 2) {
+        out.push({ sensorShape: shape(list.data[i]), visitorShape: shape(list.data[i + 1]) });
+      }
+      return out;
+    };
+    this.cache = {
+      contactBegin,
+      contactEnd,
+      contactHit,
+      sensorBegin: sensors(buf.sensorBegin),
+      sensorEnd: sensors(buf.sensorEnd),
+      sleep: this.sleepEvents,
+      wake: this.wakeEvents,
+    };
+    return this.cache;
+  }
+
+  private bodyEvents(list: IntList): BodyEvent[] {
+    const out: BodyEvent[] = [];
+    for (let i = 0; i < list.length; i++) {
+      const b = list.data[i];
+      // a body destroyed since it slept or woke is left out
+      if (this.world.core.bodies.alive[b] !== 0) out.push({ body: this.world.bodyHandle(b) });
+    }
+    return out;
+  }
+}

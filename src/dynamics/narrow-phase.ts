@@ -1,0 +1,133 @@
+import { collide } from '../geometry/manifold';
+import { referenceOwnerOfId, setReferenceHint } from '../geometry/manifold-polygon';
+import { makeManifold } from '../geometry/types';
+import { makeBounds } from '../math/aabb';
+import { DYNAMIC, FLAG_AWAKE } from './body-store';
+import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
+import { SHAPE_SENSOR, shouldShapesCollide } from './shape-store';
+import type { WorldCore } from './world-core';
+
+const manifold = makeManifold();
+const fatA = makeBounds();
+const fatB = makeBounds();
+
+/** Creates contacts for the new overlapping pairs the broad phase found, in (shapeA, shapeB) order. */
+export function createNewContacts(core: WorldCore): void {
+  const pairs = core.newPairs;
+  pairs.clear();
+  core.broadPhase.updatePairs(core.pairs, pairs);
+  const shapes = core.shapes;
+  const kind = core.bodies.kind;
+  const data = pairs.data;
+  for (let i = 0, n = pairs.length; i < n; i += 2) {
+    const a = data[i];
+    const b = data[i + 1];
+    const bodyA = shapes.body[a];
+    const bodyB = shapes.body[b];
+    if (bodyA === bodyB) continue;
+    if (kind[bodyA] !== DYNAMIC && kind[bodyB] !== DYNAMIC) continue;
+    if ((shapes.flags[a] & shapes.flags[b] & SHAPE_SENSOR) !== 0) continue;
+    if (!shouldShapesCollide(shapes, a, b)) continue;
+    core.createContact(a, b);
+  }
+}
+
+/**
+ * Updates the manifold of every contact with an awake body, keeps the impulses of points whose
+ * feature id survived (warm starting), records begin/end touching, wakes sleeping bodies that an
+ * awake body starts to touch, and destroys contacts whose fat AABBs no longer overlap.
+ */
+export function updateContacts(core: WorldCore): void {
+  const contacts = core.contacts;
+  const shapes = core.shapes;
+  const bodies = core.bodies;
+  const flagsB = bodies.flags;
+  const broad = core.broadPhase;
+  const speculative = core.settings.speculativeDistance;
+  const matchDistance2 = 4 * speculative * speculative;
+  const events = core.events;
+  for (let c = 0, n = contacts.slotCount; c < n; c++) {
+    if (contacts.alive[c] === 0) continue;
+    const bodyA = contacts.bodyA[c];
+    const bodyB = contacts.bodyB[c];
+    const awakeA = (flagsB[bodyA] & FLAG_AWAKE) !== 0;
+    const awakeB = (flagsB[bodyB] & FLAG_AWAKE) !== 0;
+    if (!awakeA && !awakeB) continue;
+    const shapeA = contacts.shapeA[c];
+    const shapeB = contacts.shapeB[c];
+    broad.getFatBounds(shapes.proxyKey[shapeA], fatA);
+    broad.getFatBounds(shapes.proxyKey[shapeB], fatB);
+    if (fatA.maxX < fatB.minX || fatB.maxX < fatA.minX || fatA.maxY < fatB.minY || fatB.maxY < fatA.minY) {
+      core.destroyContact(c, true);
+      continue;
+    }
+    const flags = contacts.flags[c];
+    const sensor = (flags & CONTACT_SENSOR) !== 0;
+    const k0 = c * 2;
+    setReferenceHint(contacts.pointCount[c] > 0 ? referenceOwnerOfId(contacts.pointId[k0]) : -1);
+    collide(
+      shapes.geometry[shapeA]!,
+      core.fillTransform(bodyA, core.xfA),
+      shapes.geometry[shapeB]!,
+      core.fillTransform(bodyB, core.xfB),
+      sensor ? 0 : speculative,
+      manifold,
+    );
+    const count = manifold.pointCount;
+    if (!sensor) {
+      // Carry the impulses of surviving points over (warm starting): same feature id, or else the old
+      // point nearest to the new one. The position fallback keeps the impulses when the manifold
+      // swaps its reference face between the two shapes (nearly parallel faces under load do), which
+      // renames the features but not the physical points; losing them makes large piles jitter.
+      const oldCount = contacts.pointCount[c];
+      const oldId0 = contacts.pointId[k0];
+      const oldId1 = contacts.pointId[k0 + 1];
+      const ox0 = contacts.pointX[k0];
+      const oy0 = contacts.pointY[k0];
+      const ox1 = contacts.pointX[k0 + 1];
+      const oy1 = contacts.pointY[k0 + 1];
+      const n0 = contacts.normalImpulse[k0];
+      const t0 = contacts.tangentImpulse[k0];
+      const n1 = contacts.normalImpulse[k0 + 1];
+      const t1 = contacts.tangentImpulse[k0 + 1];
+      const sameNormal =
+        contacts.normalX[c] * manifold.normalX + contacts.normalY[c] * manifold.normalY > 0.99;
+      for (let j = 0; j < count; j++) {
+        const p = manifold.points[j];
+        const k = k0 + j;
+        let match = -1;
+        if (oldCount > 0 && p.id === oldId0) match = 0;
+        else if (oldCount > 1 && p.id === oldId1) match = 1;
+        else if (oldCount > 0 && sameNormal) {
+          const d0 = (p.x - ox0) * (p.x - ox0) + (p.y - oy0) * (p.y - oy0);
+          const d1 =
+            oldCount > 1 ? (p.x - ox1) * (p.x - ox1) + (p.y - oy1) * (p.y - oy1) : Number.POSITIVE_INFINITY;
+          if (Math.min(d0, d1) < matchDistance2) match = d0 <= d1 ? 0 : 1;
+        }
+        contacts.pointX[k] = p.x;
+        contacts.pointY[k] = p.y;
+        contacts.separation[k] = p.separation;
+        contacts.pointId[k] = p.id;
+        contacts.normalImpulse[k] = match === 0 ? n0 : match === 1 ? n1 : 0;
+        contacts.tangentImpulse[k] = match === 0 ? t0 : match === 1 ? t1 : 0;
+      }
+      contacts.normalX[c] = manifold.normalX;
+      contacts.normalY[c] = manifold.normalY;
+    }
+    contacts.pointCount[c] = count;
+    const touching = count > 0;
+    const wasTouching = (flags & CONTACT_TOUCHING) !== 0;
+    if (touching === wasTouching) continue;
+    if (touching) {
+      contacts.flags[c] = flags | CONTACT_TOUCHING;
+      events.recordBegin(contacts, c, shapes);
+      if (!sensor) {
+        if (!awakeA) core.wake(bodyA);
+        if (!awakeB) core.wake(bodyB);
+      }
+    } else {
+      contacts.flags[c] = flags & ~CONTACT_TOUCHING;
+      events.recordEnd(contacts, c, shapes);
+    }
+  }
+}

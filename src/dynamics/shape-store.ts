@@ -1,0 +1,65 @@
+import { growF64, growI32, growU8, growU32 } from '../core/grow';
+import { SlotStore } from '../core/slot-store';
+import type { Geometry } from '../geometry/types';
+
+export const SHAPE_SENSOR = 1;
+export const SHAPE_CONTACT_EVENTS = 2;
+export const SHAPE_SENSOR_EVENTS = 4;
+export const SHAPE_HIT_EVENTS = 8;
+
+/** Shape data in columns indexed by shape slot; geometry objects are immutable and shared. */
+export class ShapeStore extends SlotStore {
+  body = new Int32Array(0);
+  /** next shape of the same body (-1 ends the list) */
+  next = new Int32Array(0);
+  kind = new Uint8Array(0);
+  flags = new Uint8Array(0);
+  density = new Float64Array(0);
+  friction = new Float64Array(0);
+  restitution = new Float64Array(0);
+  categoryBits = new Uint32Array(0);
+  maskBits = new Uint32Array(0);
+  groupIndex = new Int32Array(0);
+  proxyKey = new Int32Array(0);
+  /** tight world AABB, refreshed when the body moves */
+  minX = new Float64Array(0);
+  minY = new Float64Array(0);
+  maxX = new Float64Array(0);
+  maxY = new Float64Array(0);
+  geometry: (Geometry | undefined)[] = [];
+
+  protected growColumns(capacity: number): void {
+    this.body = growI32(this.body, capacity);
+    this.next = growI32(this.next, capacity);
+    this.kind = growU8(this.kind, capacity);
+    this.flags = growU8(this.flags, capacity);
+    this.density = growF64(this.density, capacity);
+    this.friction = growF64(this.friction, capacity);
+    this.restitution = growF64(this.restitution, capacity);
+    this.categoryBits = growU32(this.categoryBits, capacity);
+    this.maskBits = growU32(this.maskBits, capacity);
+    this.groupIndex = growI32(this.groupIndex, capacity);
+    this.proxyKey = growI32(this.proxyKey, capacity);
+    this.minX = growF64(this.minX, capacity);
+    this.minY = growF64(this.minY, capacity);
+    this.maxX = growF64(this.maxX, capacity);
+    this.maxY = growF64(this.maxY, capacity);
+  }
+
+  protected resetSlot(slot: number): void {
+    this.body[slot] = -1;
+    this.next[slot] = -1;
+    this.flags[slot] = 0;
+    this.proxyKey[slot] = -1;
+    this.geometry[slot] = undefined;
+  }
+}
+
+/** Collision filtering rule: a shared non-zero group decides; otherwise categories and masks must agree. */
+export function shouldShapesCollide(store: ShapeStore, a: number, b: number): boolean {
+  const ga = store.groupIndex[a];
+  if (ga !== 0 && ga === store.groupIndex[b]) return ga > 0;
+  return (
+    (store.categoryBits[a] & store.maskBits[b]) !== 0 && (store.categoryBits[b] & store.maskBits[a]) !== 0
+  );
+}

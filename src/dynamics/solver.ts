@@ -1,0 +1,269 @@
+import { growI32 } from '../core/grow';
+import { CONTACT_DAMPING_RATIO, CONTACT_HERTZ } from '../core/settings';
+import { integratePositions, integrateVelocities } from './body-solver';
+import {
+  DYNAMIC,
+  FLAG_ALLOW_SLEEP,
+  FLAG_AWAKE,
+  S_DPX,
+  S_DPY,
+  S_DQC,
+  S_DQS,
+  S_VX,
+  S_VY,
+  S_W,
+  STATE_STRIDE,
+  STATIC,
+} from './body-store';
+import {
+  applyRestitution,
+  prepareContact,
+  solveContacts,
+  storeImpulses,
+  warmStartContacts,
+} from './contact-solver';
+import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
+import { solveContinuous } from './continuous';
+import { SHAPE_HIT_EVENTS } from './shape-store';
+import { makeSoftness, type Softness } from './softness';
+import type { WorldCore } from './world-core';
+
+const contactSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+const staticSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+
+/** Lists the awake non-static bodies by ascending slot. */
+export function collectAwakeBodies(core: WorldCore): void {
+  const bodies = core.bodies;
+  if (core.awake.length < bodies.slotCount) core.awake = growI32(core.awake, bodies.capacity);
+  const awake = core.awake;
+  let count = 0;
+  for (let b = 0, n = bodies.slotCount; b < n; b++) {
+    if (bodies.alive[b] !== 0 && (bodies.flags[b] & FLAG_AWAKE) !== 0 && bodies.kind[b] !== STATIC) {
+      awake[count++] = b;
+    }
+  }
+  core.awakeCount = count;
+}
+
+/** Builds one constraint per touching solid contact that has an awake body. */
+function prepareContacts(core: WorldCore, h: number): void {
+  const contacts = core.contacts;
+  const bodies = core.bodies;
+  const shapes = core.shapes;
+  const cc = core.constraints;
+  const contactHertz = Math.min(CONTACT_HERTZ, 0.25 / h);
+  makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness);
+  makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness);
+  cc.reserve(contacts.liveCount);
+  const coloring = core.coloring;
+  coloring.begin(bodies.capacity, contacts.liveCount);
+  for (let c = 0, n = contacts.slotCount; c < n; c++) {
+    if (contacts.alive[c] === 0) continue;
+    if ((contacts.flags[c] & (CONTACT_TOUCHING | CONTACT_SENSOR)) !== CONTACT_TOUCHING) continue;
+    const a = contacts.bodyA[c];
+    const b = contacts.bodyB[c];
+    if ((bodies.flags[a] & FLAG_AWAKE) === 0 && (bodies.flags[b] & FLAG_AWAKE) === 0) continue;
+    coloring.add(c, bodies.kind[a] === DYNAMIC ? a : -1, bodies.kind[b] === DYNAMIC ? b : -1);
+  }
+  const total = coloring.finish();
+  const order = coloring.order;
+  let count = 0;
+  for (let k = 0; k < total; k++) {
+    const c = order[k];
+    const a = contacts.bodyA[c];
+    const b = contacts.bodyB[c];
+    const sA = contacts.shapeA[c];
+    const sB = contacts.shapeB[c];
+    const mA = bodies.invMass[a];
+    const iA = bodies.invInertia[a];
+    const mB = bodies.invMass[b];
+    const iB = bodies.invInertia[b];
+    const anchored = (mA === 0 && iA === 0) || (mB === 0 && iB === 0);
+    prepareContact(
+      cc,
+      count++,
+      c,
+      a,
+      b,
+      mA,
+      iA,
+      mB,
+      iB,
+      bodies.cx[a],
+      bodies.cy[a],
+      bodies.cx[b],
+      bodies.cy[b],
+      bodies.state,
+      contacts.normalX[c],
+      contacts.normalY[c],
+      Math.sqrt(shapes.friction[sA] * shapes.friction[sB]),
+      Math.max(shapes.restitution[sA], shapes.restitution[sB]),
+      anchored ? staticSoftness : contactSoftness,
+      contacts.pointCount[c],
+      contacts.pointX,
+      contacts.pointY,
+      contacts.separation,
+      contacts.normalImpulse,
+      contacts.tangentImpulse,
+    );
+  }
+  cc.count = count;
+}
+
+/**
+ * The soft step: for each substep integrate velocities, warm start, solve with bias, integrate
+ * positions, relax without bias; then restitution and impulses stored for the next step.
+ */
+export function solve(core: WorldCore, dt: number): void {
+  const subSteps = core.subSteps;
+  const h = dt / subSteps;
+  const invH = 1 / h;
+  prepareContacts(core, h);
+  const bodies = core.bodies;
+  const state = bodies.state;
+  const cc = core.constraints;
+  const awake = core.awake;
+  const awakeCount = core.awakeCount;
+  const settings = core.settings;
+  for (let i = 0; i < subSteps; i++) {
+    integrateVelocities(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, settings.maxLinearSpeed);
+    warmStartContacts(cc, state);
+    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
+    integratePositions(state, awake, awakeCount, h);
+    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
+  }
+  applyRestitution(cc, state, settings.restitutionThreshold);
+  const contacts = core.contacts;
+  storeImpulses(
+    cc,
+    contacts.normalImpulse,
+    contacts.tangentImpulse,
+    contacts.maxNormalImpulse,
+    contacts.approachSpeed,
+  );
+  reportHits(core);
+}
+
+/** Records a hit event per touching contact whose approach speed passed the threshold. */
+function reportHits(core: WorldCore): void {
+  const cc = core.constraints;
+  const contacts = core.contacts;
+  const shapes = core.shapes;
+  const threshold = core.hitEventThreshold;
+  for (let i = 0; i < cc.count; i++) {
+    const c = cc.ids[i * 3 + 2];
+    const a = contacts.shapeA[c];
+    const b = contacts.shapeB[c];
+    if (((shapes.flags[a] | shapes.flags[b]) & SHAPE_HIT_EVENTS) === 0) continue;
+    let best = -1;
+    let speed = threshold;
+    for (let j = 0; j < contacts.pointCount[c]; j++) {
+      const k = c * 2 + j;
+      if (contacts.maxNormalImpulse[k] > 0 && contacts.approachSpeed[k] > speed) {
+        speed = contacts.approachSpeed[k];
+        best = k;
+      }
+    }
+    if (best === -1) continue;
+    core.events.recordHit(
+      a,
+      b,
+      contacts.pointX[best],
+      contacts.pointY[best],
+      contacts.normalX[c],
+      contacts.normalY[c],
+      speed,
+    );
+  }
+}
+
+/**
+ * Writes the new transforms of the awake bodies, resets their step deltas, advances their sleep
+ * timers, clears forces and moves their proxies.
+ */
+export function finalizeBodies(core: WorldCore, dt: number): void {
+  const bodies = core.bodies;
+  const state = bodies.state;
+  const shapes = core.shapes;
+  const broad = core.broadPhase;
+  const awake = core.awake;
+  const sleepSpeed = core.settings.sleepSpeed;
+  const enableSleep = core.enableSleep;
+  const continuous = core.enableContinuous;
+  for (let i = 0, n = core.awakeCount; i < n; i++) {
+    const b = awake[i];
+    const s = b * STATE_STRIDE;
+    const dqc = state[s + S_DQC];
+    const dqs = state[s + S_DQS];
+    const q0c = bodies.qc[b];
+    const q0s = bodies.qs[b];
+    let qc = dqc * q0c - dqs * q0s;
+    let qs = dqs * q0c + dqc * q0s;
+    const inv = 1 / Math.sqrt(qc * qc + qs * qs);
+    qc *= inv;
+    qs *= inv;
+    const cx = bodies.cx[b] + state[s + S_DPX];
+    const cy = bodies.cy[b] + state[s + S_DPY];
+    const lx = bodies.lcx[b];
+    const ly = bodies.lcy[b];
+    bodies.qc[b] = qc;
+    bodies.qs[b] = qs;
+    bodies.cx[b] = cx;
+    bodies.cy[b] = cy;
+    bodies.px[b] = cx - (qc * lx - qs * ly);
+    bodies.py[b] = cy - (qs * lx + qc * ly);
+    const c0x = cx - state[s + S_DPX];
+    const c0y = cy - state[s + S_DPY];
+    state[s + S_DPX] = 0;
+    state[s + S_DPY] = 0;
+    state[s + S_DQC] = 1;
+    state[s + S_DQS] = 0;
+    bodies.fx[b] = 0;
+    bodies.fy[b] = 0;
+    bodies.torque[b] = 0;
+
+    const vx = state[s + S_VX];
+    const vy = state[s + S_VY];
+    const w = state[s + S_W];
+    if (enableSleep && (bodies.flags[b] & FLAG_ALLOW_SLEEP) !== 0) {
+      const speed = Math.sqrt(vx * vx + vy * vy) + bodies.maxExtent[b] * Math.abs(w);
+      bodies.sleepTime[b] = speed > sleepSpeed ? 0 : bodies.sleepTime[b] + dt;
+    } else {
+      bodies.sleepTime[b] = 0;
+    }
+
+    for (let sh = bodies.shapeHead[b]; sh !== -1; sh = shapes.next[sh]) core.refreshShapeBounds(sh);
+    // a body that moved more than half its thickness this step could have passed through a wall
+    if (
+      continuous &&
+      bodies.kind[b] === DYNAMIC &&
+      (Math.sqrt(vx * vx + vy * vy) + bodies.maxExtent[b] * Math.abs(w)) * dt > 0.5 * bodies.minExtent[b]
+    ) {
+      solveContinuous(core, b, c0x, c0y, q0c, q0s);
+    }
+    for (let sh = bodies.shapeHead[b]; sh !== -1; sh = shapes.next[sh]) {
+      broad.moveProxy(
+        shapes.proxyKey[sh],
+        shapes.minX[sh],
+        shapes.minY[sh],
+        shapes.maxX[sh],
+        shapes.maxY[sh],
+      );
+    }
+  }
+}
+
+/** Groups awake dynamic bodies into islands through touching contacts and puts slow islands to sleep. */
+export function updateSleep(core: WorldCore): void {
+  const bodies = core.bodies;
+  const islands = core.islands;
+  islands.reset(bodies.capacity, core.awake, core.awakeCount);
+  const cc = core.constraints;
+  const kind = bodies.kind;
+  for (let i = 0; i < cc.count; i++) {
+    const a = cc.ids[i * 3];
+    const b = cc.ids[i * 3 + 1];
+    if (kind[a] === DYNAMIC && kind[b] === DYNAMIC) islands.union(a, b);
+  }
+  islands.sleepIslands(bodies, core.awake, core.awakeCount);
+}

@@ -1,0 +1,240 @@
+import { BroadPhase, DYNAMIC_PROXY, KINEMATIC_PROXY, STATIC_PROXY } from '../collision/broad-phase';
+import { IntList } from '../collision/int-list';
+import { PairSet } from '../collision/pair-set';
+import { makeSettings, type Settings } from '../core/settings';
+import { computeShapeBounds } from '../geometry/bounds';
+import { maxExtentFrom, minExtent } from '../geometry/extent';
+import { computeMass } from '../geometry/mass';
+import type { MassData } from '../geometry/types';
+import type { Bounds } from '../math/aabb';
+import { makeBounds } from '../math/aabb';
+import { makeTransform, type Transform } from '../math/vec2';
+import { BodyStore, DYNAMIC, FLAG_AWAKE, FLAG_FIXED_ROTATION, KINEMATIC, STATIC } from './body-store';
+import { ContactConstraints } from './contact-solver';
+import { CONTACT_SENSOR, CONTACT_TOUCHING, ContactStore } from './contact-store';
+import { EventBuffers } from './event-buffers';
+import { GraphColoring } from './graph-color';
+import { Islands } from './island';
+import { SHAPE_SENSOR, ShapeStore } from './shape-store';
+
+const massScratch: MassData = { mass: 0, centerX: 0, centerY: 0, inertia: 0 };
+const boundsScratch: Bounds = makeBounds();
+
+/**
+ * The engine's state and the internal operations that keep it consistent (contacts linked to bodies,
+ * proxies in step with shapes, islands). The public `World` validates input and calls into this.
+ */
+export class WorldCore {
+  readonly settings: Settings;
+  readonly bodies = new BodyStore();
+  readonly shapes = new ShapeStore();
+  readonly contacts = new ContactStore();
+  readonly broadPhase: BroadPhase;
+  readonly pairs = new PairSet(256);
+  readonly islands = new Islands();
+  readonly constraints = new ContactConstraints();
+  readonly coloring = new GraphColoring();
+  readonly events = new EventBuffers();
+  readonly newPairs = new IntList(256);
+  /** awake non-static bodies of the current step, by ascending slot */
+  awake = new Int32Array(64);
+  awakeCount = 0;
+  gravityX = 0;
+  gravityY = -10;
+  subSteps = 4;
+  enableSleep = true;
+  enableContinuous = true;
+  hitEventThreshold = 1;
+  locked = false;
+  readonly xfA: Transform = makeTransform();
+  readonly xfB: Transform = makeTransform();
+
+  constructor(lengthUnitsPerMeter: number) {
+    this.settings = makeSettings(lengthUnitsPerMeter);
+    this.broadPhase = new BroadPhase(this.settings.aabbMargin);
+  }
+
+  fillTransform(b: number, xf: Transform): Transform {
+    const bodies = this.bodies;
+    xf.p.x = bodies.px[b];
+    xf.p.y = bodies.py[b];
+    xf.q.c = bodies.qc[b];
+    xf.q.s = bodies.qs[b];
+    return xf;
+  }
+
+  /** Refreshes the tight AABB of a shape from its body's transform. */
+  refreshShapeBounds(shape: number): void {
+    const shapes = this.shapes;
+    computeShapeBounds(
+      shapes.geometry[shape]!,
+      this.fillTransform(shapes.body[shape], this.xfA),
+      boundsScratch,
+    );
+    shapes.minX[shape] = boundsScratch.minX;
+    shapes.minY[shape] = boundsScratch.minY;
+    shapes.maxX[shape] = boundsScratch.maxX;
+    shapes.maxY[shape] = boundsScratch.maxY;
+  }
+
+  createProxy(shape: number, forcePairCreation: boolean): void {
+    const shapes = this.shapes;
+    const kind = this.bodies.kind[shapes.body[shape]];
+    const type = kind === STATIC ? STATIC_PROXY : kind === KINEMATIC ? KINEMATIC_PROXY : DYNAMIC_PROXY;
+    this.refreshShapeBounds(shape);
+    shapes.proxyKey[shape] = this.broadPhase.createProxy(
+      shapes.minX[shape],
+      shapes.minY[shape],
+      shapes.maxX[shape],
+      shapes.maxY[shape],
+      type,
+      shape,
+      forcePairCreation,
+    );
+  }
+
+  destroyProxy(shape: number): void {
+    this.broadPhase.destroyProxy(this.shapes.proxyKey[shape]);
+    this.shapes.proxyKey[shape] = -1;
+  }
+
+  /** After a body was moved by the user: new AABBs, proxies moved (pairs found next step). */
+  syncBodyProxies(b: number): void {
+    const shapes = this.shapes;
+    for (let s = this.bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
+      this.refreshShapeBounds(s);
+      const key = shapes.proxyKey[s];
+      if (!this.broadPhase.moveProxy(key, shapes.minX[s], shapes.minY[s], shapes.maxX[s], shapes.maxY[s])) {
+        this.broadPhase.bufferMove(key);
+      }
+    }
+  }
+
+  /** Mass, centre of mass, inertia and extents of a body from its shapes. */
+  updateMass(b: number): void {
+    const bodies = this.bodies;
+    const shapes = this.shapes;
+    const kind = bodies.kind[b];
+    let mass = 0;
+    let mx = 0;
+    let my = 0;
+    let inertiaAtOrigin = 0;
+    if (kind === DYNAMIC) {
+      for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
+        const density = shapes.density[s];
+        if (density === 0) continue;
+        computeMass(shapes.geometry[s]!, density, massScratch);
+        mass += massScratch.mass;
+        mx += massScratch.mass * massScratch.centerX;
+        my += massScratch.mass * massScratch.centerY;
+        inertiaAtOrigin +=
+          massScratch.inertia +
+          massScratch.mass *
+            (massScratch.centerX * massScratch.centerX + massScratch.centerY * massScratch.centerY);
+      }
+    }
+    let lcx = 0;
+    let lcy = 0;
+    let inertia = 0;
+    if (mass > 0) {
+      lcx = mx / mass;
+      lcy = my / mass;
+      inertia = inertiaAtOrigin - mass * (lcx * lcx + lcy * lcy);
+    }
+    if (kind === DYNAMIC && mass === 0) {
+      // a dynamic body always has mass, so that forces and contacts act on it
+      mass = 1;
+    }
+    bodies.mass[b] = kind === DYNAMIC ? mass : 0;
+    bodies.invMass[b] = kind === DYNAMIC ? 1 / mass : 0;
+    const fixed = (bodies.flags[b] & FLAG_FIXED_ROTATION) !== 0;
+    bodies.inertia[b] = kind === DYNAMIC && !fixed ? inertia : 0;
+    bodies.invInertia[b] = kind === DYNAMIC && !fixed && inertia > 0 ? 1 / inertia : 0;
+    bodies.lcx[b] = lcx;
+    bodies.lcy[b] = lcy;
+    bodies.updateCenter(b);
+    let maxExtent = 0;
+    let minExt = Number.POSITIVE_INFINITY;
+    for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
+      const g = shapes.geometry[s]!;
+      maxExtent = Math.max(maxExtent, maxExtentFrom(g, lcx, lcy));
+      minExt = Math.min(minExt, minExtent(g));
+    }
+    bodies.maxExtent[b] = maxExtent;
+    bodies.minExtent[b] = minExt === Number.POSITIVE_INFINITY ? 0 : minExt;
+  }
+
+  /** Wakes a body (and its sleeping island). Static bodies are never awake. */
+  wake(b: number): void {
+    const bodies = this.bodies;
+    if (bodies.kind[b] === STATIC) return;
+    this.islands.wake(bodies, b);
+  }
+
+  /** Wakes the bodies that touch `b` (its neighbours through touching contacts). */
+  wakeTouching(b: number): void {
+    const contacts = this.contacts;
+    for (let e = this.bodies.contactHead[b]; e !== -1; e = contacts.edgeNext[e]) {
+      const c = e >> 1;
+      if ((contacts.flags[c] & CONTACT_TOUCHING) === 0) continue;
+      this.wake(contacts.bodyA[c] === b ? contacts.bodyB[c] : contacts.bodyA[c]);
+    }
+  }
+
+  createContact(shapeA: number, shapeB: number): number {
+    const shapes = this.shapes;
+    const bodies = this.bodies;
+    const contacts = this.contacts;
+    const c = contacts.allocate();
+    const bodyA = shapes.body[shapeA];
+    const bodyB = shapes.body[shapeB];
+    contacts.shapeA[c] = shapeA;
+    contacts.shapeB[c] = shapeB;
+    contacts.bodyA[c] = bodyA;
+    contacts.bodyB[c] = bodyB;
+    if (((shapes.flags[shapeA] | shapes.flags[shapeB]) & SHAPE_SENSOR) !== 0)
+      contacts.flags[c] = CONTACT_SENSOR;
+    bodies.contactHead[bodyA] = contacts.linkEdge(c, 0, bodies.contactHead[bodyA]);
+    bodies.contactHead[bodyB] = contacts.linkEdge(c, 1, bodies.contactHead[bodyB]);
+    this.pairs.set(shapeA, shapeB, c);
+    return c;
+  }
+
+  /** Destroys a contact; a touching one reports its end when `report` is set. */
+  destroyContact(c: number, report: boolean): void {
+    const contacts = this.contacts;
+    const bodies = this.bodies;
+    const bodyA = contacts.bodyA[c];
+    const bodyB = contacts.bodyB[c];
+    if (report && (contacts.flags[c] & CONTACT_TOUCHING) !== 0) {
+      this.events.recordEnd(contacts, c, this.shapes);
+    }
+    bodies.contactHead[bodyA] = contacts.unlinkEdge(c, 0, bodies.contactHead[bodyA]);
+    bodies.contactHead[bodyB] = contacts.unlinkEdge(c, 1, bodies.contactHead[bodyB]);
+    this.pairs.delete(contacts.shapeA[c], contacts.shapeB[c]);
+    contacts.free(c);
+  }
+
+  /** Destroys every contact of one shape (its filter, sensor flag or body changed, or it is going away). */
+  destroyShapeContacts(shape: number, wakeOthers: boolean): void {
+    const contacts = this.contacts;
+    const b = this.shapes.body[shape];
+    let e = this.bodies.contactHead[b];
+    while (e !== -1) {
+      const next = contacts.edgeNext[e];
+      const c = e >> 1;
+      if (contacts.shapeA[c] === shape || contacts.shapeB[c] === shape) {
+        if (wakeOthers) {
+          this.wake(contacts.bodyA[c]);
+          this.wake(contacts.bodyB[c]);
+        }
+        this.destroyContact(c, false);
+      }
+      e = next;
+    }
+  }
+
+  isAwake(b: number): boolean {
+    return (this.bodies.flags[b] & FLAG_AWAKE) !== 0;
+  }
+}

@@ -1,0 +1,413 @@
+import {
+  checkBoolean,
+  checkFinite,
+  checkInteger,
+  checkKnownKeys,
+  checkNonNegative,
+  checkPositive,
+  checkVec2,
+  FulcrumError,
+  fail,
+} from '../core/errors';
+import { type Geometry, isGeometry, SEGMENT } from '../geometry/types';
+import { makeRotInto } from '../math/rot';
+import type { Vec2 } from '../math/vec2';
+import { BODY_DEF_KEYS, BODY_TYPES, Body, type BodyDef, type BodyType } from './body';
+import {
+  DYNAMIC,
+  FLAG_ALLOW_SLEEP,
+  FLAG_AWAKE,
+  FLAG_BULLET,
+  FLAG_FIXED_ROTATION,
+  KINEMATIC,
+  S_VX,
+  S_VY,
+  S_W,
+  STATE_STRIDE,
+  STATIC,
+} from './body-store';
+import { CONTACT_TOUCHING } from './contact-store';
+import { EventDispatcher, type WorldEventMap, type WorldEvents } from './events';
+import { createNewContacts, updateContacts } from './narrow-phase';
+import { resolveShapeDef, type ShapeDef, ShapeHandle } from './shape';
+import { collectAwakeBodies, finalizeBodies, solve, updateSleep } from './solver';
+import { WorldCore } from './world-core';
+
+export interface WorldDef {
+  gravity?: Vec2;
+  subSteps?: number;
+  enableSleep?: boolean;
+  enableContinuous?: boolean;
+  lengthUnitsPerMeter?: number;
+}
+
+const WORLD_DEF_KEYS = [
+  'gravity',
+  'subSteps',
+  'enableSleep',
+  'enableContinuous',
+  'lengthUnitsPerMeter',
+] as const;
+const BODY_KINDS = { static: STATIC, kinematic: KINEMATIC, dynamic: DYNAMIC } as const;
+const rotScratch = { c: 1, s: 0 };
+
+/** A physics world: bodies, their shapes, contacts and the step that moves them. */
+export class World {
+  /** @internal the engine state behind this API */
+  readonly core: WorldCore;
+  private readonly bodyHandles: (Body | undefined)[] = [];
+  /** @internal */
+  readonly shapeHandles: (ShapeHandle | undefined)[] = [];
+  private readonly dispatcher = new EventDispatcher(this);
+
+  constructor(def: WorldDef = {}) {
+    if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
+    checkKnownKeys('def', def, WORLD_DEF_KEYS);
+    const gravity = def.gravity === undefined ? { x: 0, y: -10 } : checkVec2('gravity', def.gravity);
+    const subSteps = def.subSteps === undefined ? 4 : checkInteger('subSteps', def.subSteps, 1, 64);
+    const enableSleep = def.enableSleep === undefined ? true : checkBoolean('enableSleep', def.enableSleep);
+    const enableContinuous =
+      def.enableContinuous === undefined ? true : checkBoolean('enableContinuous', def.enableContinuous);
+    const units =
+      def.lengthUnitsPerMeter === undefined
+        ? 1
+        : checkPositive('lengthUnitsPerMeter', def.lengthUnitsPerMeter);
+    this.core = new WorldCore(units);
+    this.core.gravityX = gravity.x;
+    this.core.gravityY = gravity.y;
+    this.core.subSteps = subSteps;
+    this.core.enableSleep = enableSleep;
+    this.core.enableContinuous = enableContinuous;
+  }
+
+  get gravity(): Vec2 {
+    return { x: this.core.gravityX, y: this.core.gravityY };
+  }
+
+  set gravity(value: Vec2) {
+    const g = checkVec2('gravity', value);
+    this.core.gravityX = g.x;
+    this.core.gravityY = g.y;
+  }
+
+  get subSteps(): number {
+    return this.core.subSteps;
+  }
+
+  set subSteps(value: number) {
+    this.core.subSteps = checkInteger('subSteps', value, 1, 64);
+  }
+
+  get enableSleep(): boolean {
+    return this.core.enableSleep;
+  }
+
+  /** Turning sleep off wakes every body. */
+  set enableSleep(value: boolean) {
+    checkBoolean('enableSleep', value);
+    this.core.enableSleep = value;
+    if (!value) for (const b of this.bodies) this.core.wake(b.slot);
+  }
+
+  get enableContinuous(): boolean {
+    return this.core.enableContinuous;
+  }
+
+  set enableContinuous(value: boolean) {
+    this.core.enableContinuous = checkBoolean('enableContinuous', value);
+  }
+
+  /** contactHit events are reported above this approach speed (m/s) */
+  get hitEventThreshold(): number {
+    return this.core.hitEventThreshold;
+  }
+
+  set hitEventThreshold(value: number) {
+    this.core.hitEventThreshold = checkNonNegative('hitEventThreshold', value);
+  }
+
+  get bodyCount(): number {
+    return this.core.bodies.liveCount;
+  }
+
+  get awakeBodyCount(): number {
+    const bodies = this.core.bodies;
+    let n = 0;
+    for (let b = 0; b < bodies.slotCount; b++) {
+      if (bodies.alive[b] !== 0 && (bodies.flags[b] & FLAG_AWAKE) !== 0) n++;
+    }
+    return n;
+  }
+
+  get contactCount(): number {
+    return this.core.contacts.liveCount;
+  }
+
+  /** Live bodies in slot order. */
+  get bodies(): Iterable<Body> {
+    const handles = this.bodyHandles;
+    const bodies = this.core.bodies;
+    return {
+      *[Symbol.iterator]() {
+        for (let b = 0; b < bodies.slotCount; b++) {
+          if (bodies.alive[b] !== 0) yield handles[b]!;
+        }
+      },
+    };
+  }
+
+  private checkUnlocked(): void {
+    if (this.core.locked) throw new FulcrumError('the world is locked during step()');
+  }
+
+  createBody(def: BodyDef = {}): Body {
+    this.checkUnlocked();
+    if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
+    checkKnownKeys('def', def, BODY_DEF_KEYS);
+    const type = def.type ?? 'static';
+    if (!BODY_TYPES.includes(type)) fail('type', type, "'static', 'kinematic' or 'dynamic'");
+    const position = def.position === undefined ? { x: 0, y: 0 } : checkVec2('position', def.position);
+    const angle = def.angle === undefined ? 0 : checkFinite('angle', def.angle);
+    const v =
+      def.linearVelocity === undefined ? { x: 0, y: 0 } : checkVec2('linearVelocity', def.linearVelocity);
+    const w = def.angularVelocity === undefined ? 0 : checkFinite('angularVelocity', def.angularVelocity);
+    const linearDamping =
+      def.linearDamping === undefined ? 0 : checkNonNegative('linearDamping', def.linearDamping);
+    const angularDamping =
+      def.angularDamping === undefined ? 0 : checkNonNegative('angularDamping', def.angularDamping);
+    const gravityScale = def.gravityScale === undefined ? 1 : checkFinite('gravityScale', def.gravityScale);
+    const fixedRotation =
+      def.fixedRotation === undefined ? false : checkBoolean('fixedRotation', def.fixedRotation);
+    const bullet = def.bullet === undefined ? false : checkBoolean('bullet', def.bullet);
+    const allowSleep = def.allowSleep === undefined ? true : checkBoolean('allowSleep', def.allowSleep);
+    const awake = def.awake === undefined ? true : checkBoolean('awake', def.awake);
+
+    const core = this.core;
+    const bodies = core.bodies;
+    const b = bodies.allocate();
+    const kind = BODY_KINDS[type];
+    bodies.kind[b] = kind;
+    let flags = 0;
+    if (kind !== STATIC && awake) flags |= FLAG_AWAKE;
+    if (fixedRotation) flags |= FLAG_FIXED_ROTATION;
+    if (bullet) flags |= FLAG_BULLET;
+    if (allowSleep) flags |= FLAG_ALLOW_SLEEP;
+    bodies.flags[b] = flags;
+    makeRotInto(angle, rotScratch);
+    bodies.px[b] = position.x;
+    bodies.py[b] = position.y;
+    bodies.qc[b] = rotScratch.c;
+    bodies.qs[b] = rotScratch.s;
+    if (kind !== STATIC) {
+      const s = b * STATE_STRIDE;
+      bodies.state[s + S_VX] = v.x;
+      bodies.state[s + S_VY] = v.y;
+      bodies.state[s + S_W] = fixedRotation && kind === DYNAMIC ? 0 : w;
+    }
+    bodies.linearDamping[b] = linearDamping;
+    bodies.angularDamping[b] = angularDamping;
+    bodies.gravityScale[b] = gravityScale;
+    core.updateMass(b);
+    if (kind !== STATIC && !awake) this.sleepBody(b);
+    const handle = new Body(this, b, bodies.generation[b], def.userData);
+    this.bodyHandles[b] = handle;
+    return handle;
+  }
+
+  /** Destroys a body with its shapes and contacts; the bodies it touched wake up. */
+  destroyBody(body: Body): void {
+    this.checkUnlocked();
+    const b = this.checkBody('body', body);
+    const core = this.core;
+    core.wakeTouching(b);
+    const contacts = core.contacts;
+    let e = core.bodies.contactHead[b];
+    while (e !== -1) {
+      const next = contacts.edgeNext[e];
+      core.destroyContact(e >> 1, false);
+      e = next;
+    }
+    let s = core.bodies.shapeHead[b];
+    while (s !== -1) {
+      const next = core.shapes.next[s];
+      core.destroyProxy(s);
+      core.shapes.free(s);
+      this.shapeHandles[s] = undefined;
+      s = next;
+    }
+    core.islands.remove(core.bodies, b);
+    core.bodies.free(b);
+    this.bodyHandles[b] = undefined;
+  }
+
+  /** @internal */
+  checkBody(argument: string, body: unknown): number {
+    if (!(body instanceof Body) || body.world !== this) fail(argument, body, 'a Body of this world');
+    return body.check();
+  }
+
+  /** @internal */
+  shapesOf(b: number): ShapeHandle[] {
+    const result: ShapeHandle[] = [];
+    const shapes = this.core.shapes;
+    for (let s = this.core.bodies.shapeHead[b]; s !== -1; s = shapes.next[s])
+      result.push(this.shapeHandles[s]!);
+    return result.reverse();
+  }
+
+  /** @internal */
+  createShapeOn(body: Body, geometry: Geometry, def: ShapeDef | undefined): ShapeHandle {
+    const b = body.check();
+    if (!isGeometry(geometry))
+      fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment');
+    const core = this.core;
+    if (geometry.kind === SEGMENT && core.bodies.kind[b] === DYNAMIC) {
+      throw new FulcrumError('geometry: a segment can only be attached to a static or kinematic body');
+    }
+    const d = resolveShapeDef(def);
+    const shapes = core.shapes;
+    const s = shapes.allocate();
+    shapes.body[s] = b;
+    shapes.geometry[s] = geometry;
+    shapes.kind[s] = geometry.kind;
+    shapes.flags[s] = d.flags;
+    shapes.density[s] = d.density;
+    shapes.friction[s] = d.friction;
+    shapes.restitution[s] = d.restitution;
+    shapes.categoryBits[s] = d.filter.categoryBits;
+    shapes.maskBits[s] = d.filter.maskBits;
+    shapes.groupIndex[s] = d.filter.groupIndex;
+    shapes.next[s] = core.bodies.shapeHead[b];
+    core.bodies.shapeHead[b] = s;
+    core.updateMass(b);
+    core.createProxy(s, true);
+    const handle = new ShapeHandle(body, s, shapes.generation[s], geometry, d.userData);
+    this.shapeHandles[s] = handle;
+    core.wake(b);
+    return handle;
+  }
+
+  /** @internal */
+  destroyShapeOf(body: Body, shape: ShapeHandle): void {
+    const b = body.check();
+    if (!(shape instanceof ShapeHandle) || shape.body !== body) fail('shape', shape, 'a shape of this body');
+    const s = shape.check();
+    const core = this.core;
+    core.destroyShapeContacts(s, true);
+    core.destroyProxy(s);
+    const shapes = core.shapes;
+    // unlink from the body's list
+    let prev = -1;
+    let x = core.bodies.shapeHead[b];
+    while (x !== s) {
+      prev = x;
+      x = shapes.next[x];
+    }
+    if (prev === -1) core.bodies.shapeHead[b] = shapes.next[s];
+    else shapes.next[prev] = shapes.next[s];
+    shapes.free(s);
+    this.shapeHandles[s] = undefined;
+    core.updateMass(b);
+    core.wake(b);
+  }
+
+  /** @internal */
+  changeBodyType(b: number, type: BodyType): void {
+    const core = this.core;
+    const bodies = core.bodies;
+    const kind = BODY_KINDS[type];
+    if (bodies.kind[b] === kind) return;
+    const shapes = core.shapes;
+    if (kind === DYNAMIC) {
+      for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
+        if (shapes.kind[s] === SEGMENT) {
+          throw new FulcrumError(
+            `type: a body with a segment shape cannot be 'dynamic', got ${JSON.stringify(type)}`,
+          );
+        }
+      }
+    }
+    core.wakeTouching(b);
+    core.islands.remove(bodies, b);
+    for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
+      core.destroyShapeContacts(s, true);
+      core.destroyProxy(s);
+    }
+    bodies.kind[b] = kind;
+    if (kind === STATIC) {
+      bodies.flags[b] &= ~FLAG_AWAKE;
+      const st = b * STATE_STRIDE;
+      bodies.state[st + S_VX] = 0;
+      bodies.state[st + S_VY] = 0;
+      bodies.state[st + S_W] = 0;
+    } else {
+      bodies.flags[b] |= FLAG_AWAKE;
+      bodies.sleepTime[b] = 0;
+    }
+    core.updateMass(b);
+    for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) core.createProxy(s, true);
+  }
+
+  /** @internal Puts a body and every body it touches (transitively) to sleep as one island. */
+  sleepBody(b: number): void {
+    const core = this.core;
+    const bodies = core.bodies;
+    if (bodies.kind[b] === STATIC) return;
+    core.wake(b); // leave any island it was in, so the new island is complete
+    const contacts = core.contacts;
+    const members: number[] = [b];
+    const seen = new Set<number>(members);
+    for (let i = 0; i < members.length; i++) {
+      const x = members[i];
+      for (let e = bodies.contactHead[x]; e !== -1; e = contacts.edgeNext[e]) {
+        const c = e >> 1;
+        if ((contacts.flags[c] & CONTACT_TOUCHING) === 0) continue;
+        const other = contacts.bodyA[c] === x ? contacts.bodyB[c] : contacts.bodyA[c];
+        if (bodies.kind[other] !== DYNAMIC || seen.has(other)) continue;
+        seen.add(other);
+        core.wake(other);
+        members.push(other);
+      }
+    }
+    members.sort((p, q) => p - q);
+    core.islands.sleepGroup(bodies, members);
+  }
+
+  on<K extends keyof WorldEventMap>(event: K, handler: (e: WorldEventMap[K]) => void): () => void {
+    return this.dispatcher.on(event, handler);
+  }
+
+  /** The events of the last step, as arrays, until the next step. */
+  get events(): WorldEvents {
+    return this.dispatcher.current();
+  }
+
+  /** Advances the world by `dt` seconds (use a fixed step such as 1/60). */
+  step(dt: number): void {
+    this.checkUnlocked();
+    checkNonNegative('dt', dt);
+    const core = this.core;
+    this.dispatcher.emitStep('preStep', dt);
+    core.locked = true;
+    core.events.clear();
+    try {
+      createNewContacts(core);
+      updateContacts(core);
+      if (dt > 0) {
+        collectAwakeBodies(core);
+        solve(core, dt);
+        finalizeBodies(core, dt);
+        if (core.enableSleep) updateSleep(core);
+      }
+    } finally {
+      core.locked = false;
+    }
+    this.dispatcher.deliver();
+    this.dispatcher.emitStep('postStep', dt);
+  }
+
+  /** @internal */
+  bodyHandle(b: number): Body {
+    return this.bodyHandles[b]!;
+  }
+}

@@ -1,0 +1,205 @@
+import type { Transform } from '../math/vec2';
+import { LINEAR_SLOP } from './constants';
+import { closestBetweenSegments, makeSegmentClosest } from './segment-distance';
+import type { Capsule, Manifold, Segment } from './types';
+
+/** sin of the largest angle between two capsules that still rest on each other with two points */
+const PARALLEL_SIN = 0.1;
+
+/** Closest points below this core distance give no direction: fall back to A's side normal. */
+const MIN_DIRECTION_DISTANCE = 0.1 * LINEAR_SLOP;
+
+/** Id of the single point (two-point manifolds use 0 and 1: the end of B the point came from). */
+const SINGLE_POINT_ID = 2;
+
+const closest = makeSegmentClosest();
+
+/**
+ * Writes manifold point `index` from a point (x, y) on B's core, in A's frame, given the normal
+ * n from A to B (A's frame) and B's core separation along n.
+ */
+function writePoint(
+  xfA: Transform,
+  out: Manifold,
+  index: number,
+  x: number,
+  y: number,
+  nx: number,
+  ny: number,
+  coreSeparation: number,
+  rA: number,
+  rB: number,
+  id: number,
+): void {
+  // halfway between A's surface (x - (s - rA) n) and B's surface (x - rB n)
+  const shift = 0.5 * (rA - rB - coreSeparation);
+  const mx = x + shift * nx;
+  const my = y + shift * ny;
+  const { c, s } = xfA.q;
+  const point = out.points[index];
+  point.x = c * mx - s * my + xfA.p.x;
+  point.y = s * mx + c * my + xfA.p.y;
+  point.separation = coreSeparation - rA - rB;
+  point.id = id;
+}
+
+/**
+ * Two rounded segments, in A's frame. Nearly parallel segments whose projections overlap get two
+ * points (B's ends clipped to A's extent) along A's side normal, so that a capsule lying on another
+ * is stable; otherwise one point between the closest points of the cores.
+ */
+function collideRoundedSegments(
+  a1x: number,
+  a1y: number,
+  a2x: number,
+  a2y: number,
+  rA: number,
+  xfA: Transform,
+  b1x: number,
+  b1y: number,
+  b2x: number,
+  b2y: number,
+  rB: number,
+  xfB: Transform,
+  speculativeDistance: number,
+  out: Manifold,
+): void {
+  out.pointCount = 0;
+  const qa = xfA.q;
+  const qb = xfB.q;
+  // B's relative transform: q = qA^T qB, p = qA^T (pB - pA)
+  const c = qa.c * qb.c + qa.s * qb.s;
+  const s = qa.c * qb.s - qa.s * qb.c;
+  const dx = xfB.p.x - xfA.p.x;
+  const dy = xfB.p.y - xfA.p.y;
+  const px = qa.c * dx + qa.s * dy;
+  const py = -qa.s * dx + qa.c * dy;
+  const q1x = c * b1x - s * b1y + px;
+  const q1y = s * b1x + c * b1y + py;
+  const q2x = c * b2x - s * b2y + px;
+  const q2y = s * b2x + c * b2y + py;
+
+  closestBetweenSegments(a1x, a1y, a2x, a2y, q1x, q1y, q2x, q2y, closest);
+  const radius = rA + rB;
+  const limit = speculativeDistance + radius;
+  if (!(closest.distanceSq < limit * limit)) return;
+  const distance = Math.sqrt(closest.distanceSq);
+
+  const ex = a2x - a1x;
+  const ey = a2y - a1y;
+  const lengthA = Math.sqrt(ex * ex + ey * ey);
+  const ux = ex / lengthA;
+  const uy = ey / lengthA;
+  // A's side normal, turned towards B
+  let sx = uy;
+  let sy = -ux;
+  const towardsB =
+    distance > MIN_DIRECTION_DISTANCE
+      ? sx * (closest.qx - closest.px) + sy * (closest.qy - closest.py)
+      : sx * (q1x + q2x - a1x - a2x) + sy * (q1y + q2y - a1y - a2y);
+  if (towardsB < 0) {
+    sx = -sx;
+    sy = -sy;
+  }
+
+  const fx = q2x - q1x;
+  const fy = q2y - q1y;
+  const lengthB = Math.sqrt(fx * fx + fy * fy);
+  const t1 = (q1x - a1x) * ux + (q1y - a1y) * uy;
+  const t2 = (q2x - a1x) * ux + (q2y - a1y) * uy;
+  const overlap = Math.min(Math.max(t1, t2), lengthA) - Math.max(Math.min(t1, t2), 0);
+  const parallel = Math.abs(ux * fy - uy * fx) <= PARALLEL_SIN * lengthB;
+
+  out.normalX = qa.c * sx - qa.s * sy;
+  out.normalY = qa.s * sx + qa.c * sy;
+  if (parallel && overlap > LINEAR_SLOP) {
+    // clip B's core to A's extent [0, lengthA] along u; each end keeps the id of the end it came from
+    for (let k = 0; k < 2; k++) {
+      const tk = k === 0 ? t1 : t2;
+      let x = k === 0 ? q1x : q2x;
+      let y = k === 0 ? q1y : q2y;
+      const bound = tk < 0 ? 0 : Math.min(tk, lengthA);
+      if (bound !== tk) {
+        const w = (bound - t1) / (t2 - t1);
+        x = q1x + w * fx;
+        y = q1y + w * fy;
+      }
+      const coreSeparation = (x - a1x) * sx + (y - a1y) * sy;
+      if (coreSeparation - radius < speculativeDistance) {
+        writePoint(xfA, out, out.pointCount, x, y, sx, sy, coreSeparation, rA, rB, k);
+        out.pointCount += 1;
+      }
+    }
+    return;
+  }
+  if (distance > MIN_DIRECTION_DISTANCE) {
+    sx = (closest.qx - closest.px) / distance;
+    sy = (closest.qy - closest.py) / distance;
+    out.normalX = qa.c * sx - qa.s * sy;
+    out.normalY = qa.s * sx + qa.c * sy;
+  }
+  const coreSeparation = (closest.qx - closest.px) * sx + (closest.qy - closest.py) * sy;
+  if (!(coreSeparation - radius < speculativeDistance)) return;
+  writePoint(xfA, out, 0, closest.qx, closest.qy, sx, sy, coreSeparation, rA, rB, SINGLE_POINT_ID);
+  out.pointCount = 1;
+}
+
+export function collideCapsules(
+  a: Capsule,
+  xfA: Transform,
+  b: Capsule,
+  xfB: Transform,
+  speculativeDistance: number,
+  out: Manifold,
+): void {
+  const p1 = a.center1;
+  const p2 = a.center2;
+  const q1 = b.center1;
+  const q2 = b.center2;
+  collideRoundedSegments(
+    p1.x,
+    p1.y,
+    p2.x,
+    p2.y,
+    a.radius,
+    xfA,
+    q1.x,
+    q1.y,
+    q2.x,
+    q2.y,
+    b.radius,
+    xfB,
+    speculativeDistance,
+    out,
+  );
+}
+
+export function collideCapsuleSegment(
+  a: Capsule,
+  xfA: Transform,
+  b: Segment,
+  xfB: Transform,
+  speculativeDistance: number,
+  out: Manifold,
+): void {
+  const p1 = a.center1;
+  const p2 = a.center2;
+  const q1 = b.point1;
+  const q2 = b.point2;
+  collideRoundedSegments(
+    p1.x,
+    p1.y,
+    p2.x,
+    p2.y,
+    a.radius,
+    xfA,
+    q1.x,
+    q1.y,
+    q2.x,
+    q2.y,
+    0,
+    xfB,
+    speculativeDistance,
+    out,
+  );
+}

@@ -1,0 +1,133 @@
+import { checkFinite, checkNonNegative, checkPositive, checkVec2, fail } from '../core/errors';
+import { makeRot } from '../math/rot';
+import type { Vec2 } from '../math/vec2';
+import { LINEAR_SLOP } from './constants';
+import { computeHull } from './hull';
+import {
+  CAPSULE,
+  type Capsule,
+  CIRCLE,
+  type Circle,
+  POLYGON,
+  type Polygon,
+  SEGMENT,
+  type Segment,
+} from './types';
+
+function frozenPoint(x: number, y: number): Vec2 {
+  return Object.freeze({ x, y });
+}
+
+function optionalPoint(argument: string, value: unknown): Vec2 {
+  return value === undefined ? frozenPoint(0, 0) : Object.freeze(checkVec2(argument, value));
+}
+
+/** Builds the frozen polygon from counter-clockwise hull vertices: edge normals and area centroid. */
+function makePolygon(vertices: readonly Vec2[], radius: number, centroid?: Vec2): Polygon {
+  const count = vertices.length;
+  const normals: Vec2[] = [];
+  for (let i = 0; i < count; i++) {
+    const a = vertices[i];
+    const b = vertices[i + 1 === count ? 0 : i + 1];
+    const ex = b.x - a.x;
+    const ey = b.y - a.y;
+    const len = Math.sqrt(ex * ex + ey * ey);
+    normals.push(frozenPoint(ey / len, -ex / len));
+  }
+  return Object.freeze({
+    type: 'polygon',
+    kind: POLYGON,
+    count,
+    vertices: Object.freeze(vertices.map((v) => frozenPoint(v.x, v.y))),
+    normals: Object.freeze(normals),
+    centroid: centroid ?? areaCentroid(vertices),
+    radius,
+  });
+}
+
+/** Area centroid of a counter-clockwise polygon, summed relative to its first vertex for precision. */
+function areaCentroid(vertices: readonly Vec2[]): Vec2 {
+  const o = vertices[0];
+  let area = 0;
+  let cx = 0;
+  let cy = 0;
+  for (let i = 1; i + 1 < vertices.length; i++) {
+    const ax = vertices[i].x - o.x;
+    const ay = vertices[i].y - o.y;
+    const bx = vertices[i + 1].x - o.x;
+    const by = vertices[i + 1].y - o.y;
+    const triangleArea = 0.5 * (ax * by - ay * bx);
+    area += triangleArea;
+    cx += (triangleArea * (ax + bx)) / 3;
+    cy += (triangleArea * (ay + by)) / 3;
+  }
+  return frozenPoint(o.x + cx / area, o.y + cy / area);
+}
+
+function checkApart(p1: Vec2, p2: Vec2, value: unknown): void {
+  const dx = p2.x - p1.x;
+  const dy = p2.y - p1.y;
+  if (dx * dx + dy * dy < LINEAR_SLOP * LINEAR_SLOP) {
+    fail('p2', value, `at least ${LINEAR_SLOP} m away from p1 (${p1.x}, ${p1.y})`);
+  }
+}
+
+/** Factories of immutable geometry in a body's local frame. Every argument is validated. */
+export const Shape = {
+  circle(radius: number, center?: Vec2): Circle {
+    checkPositive('radius', radius);
+    return Object.freeze({ type: 'circle', kind: CIRCLE, center: optionalPoint('center', center), radius });
+  },
+
+  /** A rectangle with half extents, centred on `center`, rotated by `angle` radians. */
+  box(halfWidth: number, halfHeight: number, center?: Vec2, angle?: number): Polygon {
+    checkPositive('halfWidth', halfWidth);
+    checkPositive('halfHeight', halfHeight);
+    const c = optionalPoint('center', center);
+    const q = makeRot(angle === undefined ? 0 : checkFinite('angle', angle));
+    const corners = [
+      [-halfWidth, -halfHeight],
+      [halfWidth, -halfHeight],
+      [halfWidth, halfHeight],
+      [-halfWidth, halfHeight],
+    ];
+    const vertices = corners.map(([x, y]) => ({ x: c.x + q.c * x - q.s * y, y: c.y + q.s * x + q.c * y }));
+    return makePolygon(vertices, 0, c);
+  },
+
+  /** Convex hull of `points`; `radius` rounds the corners (the surface is the hull inflated by radius). */
+  polygon(points: readonly Vec2[], radius?: number): Polygon {
+    const r = radius === undefined ? 0 : checkNonNegative('radius', radius);
+    if (!Array.isArray(points)) fail('points', points, 'an array of at least 3 vectors { x, y }');
+    const checked = points.map((p, i) => checkVec2(`points[${i}]`, p));
+    return makePolygon(computeHull(checked, 'points'), r);
+  },
+
+  /** The set of points within `radius` of the segment p1-p2. */
+  capsule(p1: Vec2, p2: Vec2, radius: number): Capsule {
+    const a = checkVec2('p1', p1);
+    const b = checkVec2('p2', p2);
+    checkPositive('radius', radius);
+    checkApart(a, b, p2);
+    return Object.freeze({
+      type: 'capsule',
+      kind: CAPSULE,
+      center1: Object.freeze(a),
+      center2: Object.freeze(b),
+      radius,
+    });
+  },
+
+  /** A two-sided segment without thickness (static or kinematic bodies only). */
+  segment(p1: Vec2, p2: Vec2): Segment {
+    const a = checkVec2('p1', p1);
+    const b = checkVec2('p2', p2);
+    checkApart(a, b, p2);
+    return Object.freeze({
+      type: 'segment',
+      kind: SEGMENT,
+      point1: Object.freeze(a),
+      point2: Object.freeze(b),
+    });
+  },
+};

@@ -1,0 +1,121 @@
+import type { Vec2 } from '../math/vec2';
+
+/** Largest vertex count of a convex polygon. */
+export const MAX_POLYGON_VERTICES = 8;
+
+/** Numeric shape kinds, used for dispatch inside the engine. The public API shows the string `type`. */
+export const CIRCLE = 0;
+export const CAPSULE = 1;
+export const SEGMENT = 2;
+export const POLYGON = 3;
+export type ShapeKind = typeof CIRCLE | typeof CAPSULE | typeof SEGMENT | typeof POLYGON;
+
+/** All geometry is in the body's local frame (metres), immutable once built by `Shape.*`. */
+export interface Circle {
+  readonly type: 'circle';
+  readonly kind: typeof CIRCLE;
+  readonly center: Vec2;
+  readonly radius: number;
+}
+
+export interface Capsule {
+  readonly type: 'capsule';
+  readonly kind: typeof CAPSULE;
+  readonly center1: Vec2;
+  readonly center2: Vec2;
+  readonly radius: number;
+}
+
+/** A two-sided segment with no thickness; only on static or kinematic bodies. */
+export interface Segment {
+  readonly type: 'segment';
+  readonly kind: typeof SEGMENT;
+  readonly point1: Vec2;
+  readonly point2: Vec2;
+}
+
+/**
+ * Convex polygon, counter-clockwise, no three collinear vertices, 3..8 vertices.
+ * `radius` > 0 rounds it (the surface is the core polygon inflated by radius).
+ */
+export interface Polygon {
+  readonly type: 'polygon';
+  readonly kind: typeof POLYGON;
+  readonly count: number;
+  readonly vertices: readonly Vec2[];
+  /** outward unit normal of edge i (from vertex i to vertex i+1) */
+  readonly normals: readonly Vec2[];
+  readonly centroid: Vec2;
+  readonly radius: number;
+}
+
+export type Geometry = Circle | Capsule | Segment | Polygon;
+
+/** Mass properties of one shape: inertia is about the shape's own centre of mass. */
+export interface MassData {
+  mass: number;
+  centerX: number;
+  centerY: number;
+  /** rotational inertia about (centerX, centerY) */
+  inertia: number;
+}
+
+/**
+ * One contact point. The point is in world coordinates, halfway between the two surfaces.
+ * `separation` < 0 means overlap. `id` names the features that made the point so that the
+ * solver can warm start it next step: same features, same id.
+ */
+export interface ManifoldPoint {
+  x: number;
+  y: number;
+  separation: number;
+  id: number;
+}
+
+/** Contact manifold between shape A and shape B: the normal is a world unit vector from A to B. */
+export interface Manifold {
+  normalX: number;
+  normalY: number;
+  pointCount: number;
+  readonly points: [ManifoldPoint, ManifoldPoint];
+}
+
+export function makeManifold(): Manifold {
+  return {
+    normalX: 0,
+    normalY: 0,
+    pointCount: 0,
+    points: [
+      { x: 0, y: 0, separation: 0, id: 0 },
+      { x: 0, y: 0, separation: 0, id: 0 },
+    ],
+  };
+}
+
+/** Result of a ray cast: world or local depending on the caller's frame. */
+export interface RayHit {
+  /** fraction of the translation at which the ray hits, in [0, 1] */
+  fraction: number;
+  pointX: number;
+  pointY: number;
+  normalX: number;
+  normalY: number;
+}
+
+export function makeRayHit(): RayHit {
+  return { fraction: 0, pointX: 0, pointY: 0, normalX: 0, normalY: 0 };
+}
+
+const KIND_OF_TYPE: Record<string, number> = {
+  circle: CIRCLE,
+  capsule: CAPSULE,
+  segment: SEGMENT,
+  polygon: POLYGON,
+};
+
+/** True for geometry built by `Shape.*` (frozen, with a matching type and kind). */
+export function isGeometry(value: unknown): value is Geometry {
+  if (typeof value !== 'object' || value === null || !Object.isFrozen(value)) return false;
+  const g = value as { type?: unknown; kind?: unknown };
+  return typeof g.type === 'string' && KIND_OF_TYPE[g.type] === g.kind;
+}

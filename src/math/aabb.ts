@@ -1,0 +1,23 @@
+import type { Vec2 } from './vec2';
+
+/** Axis-aligned bounding box. */
+export interface AABB {
+  lowerBound: Vec2;
+  upperBound: Vec2;
+}
+
+/** Scratch form used inside the engine: four numbers, no nested objects. */
+export interface Bounds {
+  minX: number;
+  minY: number;
+  maxX: number;
+  maxY: number;
+}
+
+export function makeBounds(): Bounds {
+  return { minX: 0, minY: 0, maxX: 0, maxY: 0 };
+}
+
+export function boundsOverlap(a: Bounds, b: Bounds): boolean {
+  return !(b.minX > a.maxX || b.minY > a.maxY || a.minX > b.maxX || a.minY > b.maxY);
+}

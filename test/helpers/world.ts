@@ -1,0 +1,26 @@
+import { type Body, Shape, World, type WorldDef } from '../../src/index';
+
+/** Steps `world` for `seconds` at 60 Hz, calling `each` after every step. */
+export function run(world: World, seconds: number, each?: (t: number) => void): void {
+  const steps = Math.round(seconds * 60);
+  for (let i = 1; i <= steps; i++) {
+    world.step(1 / 60);
+    each?.(i / 60);
+  }
+}
+
+/** A world with a static ground box whose top surface is y = 0. */
+export function groundWorld(
+  def: WorldDef = {},
+  friction = 0.6,
+  restitution = 0,
+): { world: World; ground: Body } {
+  const world = new World(def);
+  const ground = world.createBody({ position: { x: 0, y: -1 } });
+  ground.createShape(Shape.box(100, 1), { friction, restitution });
+  return { world, ground };
+}
+
+export function dist(a: { x: number; y: number }, b: { x: number; y: number }): number {
+  return Math.sqrt((a.x - b.x) ** 2 + (a.y - b.y) ** 2);
+}

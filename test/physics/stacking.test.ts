@@ -1,0 +1,90 @@
+import { describe, expect, it } from 'vitest';
+import { type Body, Shape, type World } from '../../src/index';
+import { dist, groundWorld, run } from '../helpers/world';
+
+function verticalStack(world: World, n: number): Body[] {
+  const boxes: Body[] = [];
+  for (let i = 0; i < n; i++) {
+    const b = world.createBody({ type: 'dynamic', position: { x: 0, y: 0.5 + i } });
+    b.createShape(Shape.box(0.5, 0.5));
+    boxes.push(b);
+  }
+  return boxes;
+}
+
+function pyramid(world: World, base: number): Body[] {
+  const boxes: Body[] = [];
+  for (let row = 0; row < base; row++) {
+    for (let i = 0; i < base - row; i++) {
+      const x = (i - (base - row - 1) / 2) * 1.0;
+      const b = world.createBody({ type: 'dynamic', position: { x, y: 0.5 + row } });
+      b.createShape(Shape.box(0.5, 0.5));
+      boxes.push(b);
+    }
+  }
+  return boxes;
+}
+
+/** Largest displacement of any body from where it was after `settle` seconds, over `seconds` more. */
+function drift(world: World, boxes: Body[], settle: number, seconds: number): number {
+  run(world, settle);
+  const start = boxes.map((b) => b.position);
+  run(world, seconds);
+  return Math.max(...boxes.map((b, i) => dist(b.position, start[i])));
+}
+
+function allAsleepWithin(world: World, boxes: Body[], seconds: number): boolean {
+  world.enableSleep = true;
+  let asleep = false;
+  run(world, seconds, () => {
+    if (!asleep && boxes.every((b) => !b.isAwake)) asleep = true;
+  });
+  return asleep;
+}
+
+describe('stacking', () => {
+  it('a vertical stack of 20 boxes stands for 30 s, then sleeps within 5 s', () => {
+    const { world } = groundWorld({ enableSleep: false });
+    const boxes = verticalStack(world, 20);
+    expect(drift(world, boxes, 1, 29)).toBeLessThan(0.01);
+    expect(allAsleepWithin(world, boxes, 5)).toBe(true);
+  });
+
+  it('a pyramid with a base of 20 stands for 30 s, then sleeps within 5 s', () => {
+    const { world } = groundWorld({ enableSleep: false });
+    const boxes = pyramid(world, 20);
+    expect(drift(world, boxes, 1, 29)).toBeLessThan(0.01);
+    expect(allAsleepWithin(world, boxes, 5)).toBe(true);
+  });
+
+  it('a pyramid with a base of 100 (5,050 boxes) stands for 10 s', () => {
+    const { world } = groundWorld({ enableSleep: false });
+    const boxes = pyramid(world, 100);
+    expect(boxes.length).toBe(5050);
+    const initial = boxes.map((b) => b.position);
+    run(world, 10);
+    // standing: no box has fallen or slid off (a fallen box moves metres); the soft contacts compress
+    // the 100 rows by 0.73 m in all, as Box2D v3 does with the same contact stiffness
+    const moved = Math.max(...boxes.map((b, i) => dist(b.position, initial[i])));
+    expect(moved).toBeLessThan(1);
+    const top = boxes[boxes.length - 1].position;
+    expect(Math.abs(top.x)).toBeLessThan(0.1);
+    expect(Math.abs(boxes[boxes.length - 1].angle)).toBeLessThan(0.01);
+  });
+
+  // Fails today: the heavy box sinks 3.6 cm, because the soft contact's stiffness scales with the light
+  // body's mass, not with the load it carries (issue 2, open). Box2D v3 behaves the same.
+  it.skip('a 100 kg box on a 1 kg box sinks less than 2 cm into it', () => {
+    const { world } = groundWorld({ enableSleep: false });
+    const light = world.createBody({ type: 'dynamic', position: { x: 0, y: 0.5 } });
+    light.createShape(Shape.box(0.5, 0.5), { density: 1 });
+    const heavy = world.createBody({ type: 'dynamic', position: { x: 0, y: 1.5 } });
+    heavy.createShape(Shape.box(0.5, 0.5), { density: 100 });
+    expect(heavy.mass / light.mass).toBeCloseTo(100, 10);
+    let worst = 0;
+    run(world, 5, () => {
+      worst = Math.max(worst, 1 - (heavy.position.y - light.position.y), 0.5 - light.position.y);
+    });
+    expect(worst).toBeLessThan(0.02);
+  });
+});

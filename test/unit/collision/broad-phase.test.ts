@@ -1,0 +1,225 @@
+import { describe, expect, it } from 'vitest';
+import {
+  BroadPhase,
+  type BroadPhaseRayCastVisitor,
+  type ProxyType,
+  proxyKeyId,
+  proxyKeyType,
+} from '../../../src/collision/broad-phase';
+import { IntList } from '../../../src/collision/int-list';
+import { PairSet } from '../../../src/collision/pair-set';
+import { makeBounds } from '../../../src/math/aabb';
+
+function rng(seed: number): () => number {
+  let s = seed >>> 0;
+  return () => {
+    s = (s + 0x6d2b79f5) >>> 0;
+    let t = Math.imul(s ^ (s >>> 15), 1 | s);
+    t ^= t + Math.imul(t ^ (t >>> 7), 61 | t);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+type Box = [number, number, number, number];
+
+interface Proxy {
+  type: ProxyType;
+  shapeId: number;
+  fat: Box;
+}
+
+const MARGIN = 0.1;
+const overlaps = (a: Box, b: Box) => !(a[0] > b[2] || a[1] > b[3] || a[2] < b[0] || a[3] < b[1]);
+const fatten = (b: Box, type: ProxyType): Box => {
+  const m = type === 0 ? 0 : MARGIN;
+  return [b[0] - m, b[1] - m, b[2] + m, b[3] + m];
+};
+
+function pairsOf(list: IntList, from = 0): [number, number][] {
+  const pairs: [number, number][] = [];
+  for (let i = from; i < list.length; i += 2) pairs.push([list.get(i), list.get(i + 1)]);
+  return pairs;
+}
+
+/** Every pair of live proxies that may pair by type, involves a buffered one, overlaps and is not existing. */
+function bruteForcePairs(
+  proxies: Map<number, Proxy>,
+  moved: Set<number>,
+  existing: PairSet,
+): [number, number][] {
+  const entries = [...proxies];
+  const pairs: [number, number][] = [];
+  for (let i = 0; i < entries.length; i++) {
+    for (let j = i + 1; j < entries.length; j++) {
+      const [ka, a] = entries[i];
+      const [kb, b] = entries[j];
+      if (a.type !== 2 && b.type !== 2) continue;
+      if (!moved.has(ka) && !moved.has(kb)) continue;
+      if (!overlaps(a.fat, b.fat) || existing.has(a.shapeId, b.shapeId)) continue;
+      pairs.push([Math.min(a.shapeId, b.shapeId), Math.max(a.shapeId, b.shapeId)]);
+    }
+  }
+  return pairs.sort((p, q) => p[0] - q[0] || p[1] - q[1]);
+}
+
+/** A random scene of boxes moving, appearing and disappearing; checks every step against brute force. */
+function runScene(seed: number, steps: number, check: boolean): number[] {
+  const random = rng(seed);
+  const bp = new BroadPhase(MARGIN);
+  const proxies = new Map<number, Proxy>();
+  const tight = new Map<number, Box>();
+  const moved = new Set<number>();
+  const existing = new PairSet();
+  const out = new IntList();
+  const trace: number[] = [];
+  let nextShape = 0;
+  const create = () => {
+    const x = random() * 40;
+    const y = random() * 40;
+    const b: Box = [x, y, x + 0.2 + random() * 1.5, y + 0.2 + random() * 1.5];
+    const r = random();
+    const type: ProxyType = r < 0.2 ? 0 : r < 0.3 ? 1 : 2;
+    const force = random() < 0.5;
+    const shapeId = nextShape++;
+    const key = bp.createProxy(b[0], b[1], b[2], b[3], type, shapeId, force);
+    expect(proxies.has(key)).toBe(false);
+    proxies.set(key, { type, shapeId, fat: fatten(b, type) });
+    tight.set(key, b);
+    if (type !== 0 || force) moved.add(key);
+  };
+  for (let i = 0; i < 400; i++) create();
+  for (let step = 0; step < steps; step++) {
+    for (const [key, p] of [...proxies]) {
+      const r = random();
+      if (r < 0.02) {
+        bp.destroyProxy(key);
+        proxies.delete(key);
+        tight.delete(key);
+        moved.delete(key);
+      } else if (r < 0.04) {
+        bp.bufferMove(key);
+        moved.add(key);
+      } else if ((p.type !== 0 && r < 0.5) || r < 0.06) {
+        const b = tight.get(key)!;
+        const dx = (random() - 0.5) * 0.3;
+        const dy = (random() - 0.5) * 0.3;
+        const nb: Box = [b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy];
+        tight.set(key, nb);
+        const inside = p.fat[0] <= nb[0] && p.fat[1] <= nb[1] && p.fat[2] >= nb[2] && p.fat[3] >= nb[3];
+        expect(bp.moveProxy(key, nb[0], nb[1], nb[2], nb[3])).toBe(!inside);
+        if (!inside) {
+          p.fat = fatten(nb, p.type);
+          moved.add(key);
+        }
+      }
+    }
+    for (let i = 0; i < 8; i++) create();
+    const expected = check ? bruteForcePairs(proxies, moved, existing) : [];
+    out.clear();
+    out.push2(-7, -8); // updatePairs appends and sorts only what it appends
+    bp.updatePairs(existing, out);
+    expect(out.get(0)).toBe(-7);
+    const found = pairsOf(out, 2);
+    if (check) expect(found).toEqual(expected);
+    moved.clear();
+    for (let i = 0; i < out.length; i++) trace.push(out.get(i));
+    // Act like the engine: keep most new pairs as contacts (a filter may reject some), and drop
+    // contacts whose fat boxes separated.
+    for (const [a, b] of found) if (random() < 0.7) existing.set(a, b, a);
+    const byShape = new Map<number, Proxy>();
+    for (const p of proxies.values()) byShape.set(p.shapeId, p);
+    for (let s = 0; s < nextShape; s += 1 + Math.floor(random() * 3)) {
+      for (let t = s + 1; t < nextShape && t < s + 60; t++) {
+        if (!existing.has(s, t)) continue;
+        const pa = byShape.get(s);
+        const pb = byShape.get(t);
+        if (!pa || !pb || !overlaps(pa.fat, pb.fat)) existing.delete(s, t);
+      }
+    }
+    expect(bp.proxyCount).toBe(proxies.size);
+    for (const type of [0, 1, 2] as const) bp.getTree(type).validate();
+  }
+  const bounds = makeBounds();
+  for (const [key, p] of proxies) {
+    const b = bp.getFatBounds(key, bounds);
+    expect([b.minX, b.minY, b.maxX, b.maxY]).toEqual(p.fat);
+    expect(bp.getShapeId(key)).toBe(p.shapeId);
+    expect(proxyKeyType(key)).toBe(p.type);
+  }
+  return trace;
+}
+
+describe('BroadPhase', () => {
+  it('encodes the tree and id in the key and fattens non-static boxes', () => {
+    const bp = new BroadPhase(0.5);
+    const s = bp.createProxy(0, 0, 1, 1, 0, 10, false);
+    const k = bp.createProxy(0, 0, 1, 1, 1, 11, false);
+    const d = bp.createProxy(0, 0, 1, 1, 2, 12, false);
+    expect([proxyKeyType(s), proxyKeyType(k), proxyKeyType(d)]).toEqual([0, 1, 2]);
+    expect(proxyKeyId(d)).toBe(d >> 2);
+    expect(bp.getFatBounds(s, makeBounds())).toEqual({ minX: 0, minY: 0, maxX: 1, maxY: 1 });
+    expect(bp.getFatBounds(d, makeBounds())).toEqual({ minX: -0.5, minY: -0.5, maxX: 1.5, maxY: 1.5 });
+    expect(bp.moveCount).toBe(2);
+    expect(bp.moveProxy(d, 0.3, 0.3, 1.3, 1.3)).toBe(false);
+    expect(bp.moveProxy(d, 0.6, 0, 1.6, 1)).toBe(true);
+    expect(bp.moveCount).toBe(2);
+    const out = new IntList();
+    bp.updatePairs(new PairSet(), out);
+    expect(pairsOf(out)).toEqual([
+      [10, 12],
+      [11, 12],
+    ]);
+    expect(bp.moveCount).toBe(0);
+    out.clear();
+    bp.updatePairs(new PairSet(), out);
+    expect(out.length).toBe(0);
+  });
+
+  it('forgets a buffered proxy that is destroyed', () => {
+    const bp = new BroadPhase(0.1);
+    const a = bp.createProxy(0, 0, 1, 1, 2, 1, false);
+    const b = bp.createProxy(0, 0, 1, 1, 2, 2, false);
+    bp.createProxy(0, 0, 1, 1, 0, 3, false);
+    bp.destroyProxy(b);
+    const out = new IntList();
+    bp.updatePairs(new PairSet(), out);
+    expect(pairsOf(out)).toEqual([[1, 3]]);
+    bp.destroyProxy(a);
+    expect(bp.proxyCount).toBe(1);
+  });
+
+  it('reports exactly the brute-force pairs of moving, appearing and vanishing boxes, sorted', () => {
+    runScene(1, 25, true);
+    runScene(2, 10, true);
+  });
+
+  it('is deterministic: the same operations give identical outputs', () => {
+    expect(runScene(5, 15, false)).toEqual(runScene(5, 15, false));
+  });
+
+  it('queries selected trees and casts rays through all of them', () => {
+    const bp = new BroadPhase(0.1);
+    const keys: number[] = [];
+    for (let i = 0; i < 9; i++)
+      keys.push(bp.createProxy(i * 3, 0, i * 3 + 1, 1, (i % 3) as ProxyType, 100 + i, false));
+    const out = new IntList();
+    bp.query(-1, -1, 100, 2, 0b101, out);
+    expect(Array.from(out.data.subarray(0, out.length)).sort()).toEqual([100, 102, 103, 105, 106, 108]);
+    out.clear();
+    bp.query(2.95, 0, 3.5, 1, 0b111, out);
+    expect(Array.from(out.data.subarray(0, out.length))).toEqual([101]);
+
+    const seen: [number, number][] = [];
+    const visitor: BroadPhaseRayCastVisitor = {
+      rayCastProxy(key, shapeId, maxFraction) {
+        seen.push([key, shapeId]);
+        return shapeId === 104 ? 0.5 : maxFraction;
+      },
+    };
+    expect(bp.rayCast(-5, 0.5, 40, 0, 1, visitor)).toBe(0.5);
+    for (const [key, shapeId] of seen) expect(keys.indexOf(key)).toBe(shapeId - 100);
+    expect(seen.map(([, s]) => s)).toContain(104);
+    bp.rebuild();
+    bp.getTree(0).validate();
+  });
+});

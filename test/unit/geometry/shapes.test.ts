@@ -1,0 +1,246 @@
+import { describe, expect, it } from 'vitest';
+import { FulcrumError } from '../../../src/core/errors';
+import { computeShapeBounds } from '../../../src/geometry/bounds';
+import { Shape } from '../../../src/geometry/shapes';
+import { CAPSULE, CIRCLE, POLYGON, type Polygon, SEGMENT } from '../../../src/geometry/types';
+import { makeBounds } from '../../../src/math/aabb';
+import { random, xf } from './brute-force';
+
+function expectThrows(call: () => unknown, ...fragments: string[]): void {
+  let error: unknown;
+  try {
+    call();
+  } catch (e) {
+    error = e;
+  }
+  expect(error).toBeInstanceOf(FulcrumError);
+  for (const fragment of fragments) expect((error as Error).message).toContain(fragment);
+}
+
+/** Brute-force hull check: every input point is on the inner side of every hull edge. */
+function expectHullOf(g: Polygon, points: { x: number; y: number }[]): void {
+  const v = g.vertices;
+  for (let i = 0; i < g.count; i++) {
+    const a = v[i];
+    const b = v[(i + 1) % g.count];
+    const c = v[(i + 2) % g.count];
+    const ex = b.x - a.x;
+    const ey = b.y - a.y;
+    const len = Math.hypot(ex, ey);
+    // counter-clockwise and strictly convex (no collinear vertex)
+    expect((ex * (c.y - a.y) - ey * (c.x - a.x)) / len).toBeGreaterThan(0.005 - 1e-12);
+    // unit outward normal
+    expect(g.normals[i].x).toBeCloseTo(ey / len, 12);
+    expect(g.normals[i].y).toBeCloseTo(-ex / len, 12);
+    for (const p of points) {
+      expect((ex * (p.y - a.y) - ey * (p.x - a.x)) / len).toBeGreaterThan(-0.005);
+    }
+  }
+  // every hull vertex is an input point
+  for (const h of v) expect(points.some((p) => p.x === h.x && p.y === h.y)).toBe(true);
+}
+
+/** Brute-force hull vertices: p is extreme when some direction makes it the unique maximum. */
+function bruteForceExtremeCount(points: { x: number; y: number }[]): number {
+  let count = 0;
+  for (const p of points) {
+    let extreme = false;
+    for (let k = 0; k < 3600 && !extreme; k++) {
+      const ux = Math.cos((k * Math.PI) / 1800);
+      const uy = Math.sin((k * Math.PI) / 1800);
+      extreme = points.every((q) => q === p || q.x * ux + q.y * uy < p.x * ux + p.y * uy);
+    }
+    if (extreme) count++;
+  }
+  return count;
+}
+
+describe('Shape.polygon hull', () => {
+  it('is the convex hull of random point sets (brute-force convexity and extreme points)', () => {
+    const rnd = random(7);
+    let compared = 0;
+    for (let trial = 0; trial < 150; trial++) {
+      const n = 3 + Math.floor(rnd() * 6);
+      const points = Array.from({ length: n }, () => ({ x: rnd() * 4 - 2, y: rnd() * 4 - 2 }));
+      let g: Polygon;
+      try {
+        g = Shape.polygon(points);
+      } catch (e) {
+        expect(e).toBeInstanceOf(FulcrumError); // nearly collinear sets are rejected, never mangled
+        continue;
+      }
+      expectHullOf(g, points);
+      const extreme = bruteForceExtremeCount(points);
+      // the hull may only drop extreme points that are nearly collinear (within 0.005 m)
+      expect(g.count).toBeLessThanOrEqual(extreme);
+      if (g.count === extreme) compared++;
+    }
+    expect(compared).toBeGreaterThan(130);
+  });
+
+  it('welds near points, removes collinear points and keeps counter-clockwise order', () => {
+    const g = Shape.polygon([
+      { x: 0, y: 0 },
+      { x: 0, y: 2 },
+      { x: 1, y: 0 },
+      { x: 2, y: 0 }, // makes (1, 0) collinear
+      { x: 2.001, y: 0.001 }, // welded into (2, 0)
+      { x: 2, y: 2 },
+      { x: 1, y: 1 }, // interior
+    ]);
+    expect(g.count).toBe(4);
+    expect(g.vertices.map((p) => [p.x, p.y])).toEqual([
+      [0, 0],
+      [2, 0],
+      [2, 2],
+      [0, 2],
+    ]);
+    expect(g.centroid).toEqual({ x: 1, y: 1 });
+    expect(g.type).toBe('polygon');
+    expect(g.kind).toBe(POLYGON);
+    expect(Object.isFrozen(g) && Object.isFrozen(g.vertices) && Object.isFrozen(g.vertices[0])).toBe(true);
+  });
+
+  it('has the area centroid, not the vertex average', () => {
+    // a triangle's area centroid is the vertex average; a trapezoid's is not
+    const g = Shape.polygon([
+      { x: 0, y: 0 },
+      { x: 4, y: 0 },
+      { x: 3, y: 1 },
+      { x: 1, y: 1 },
+    ]);
+    // trapezoid with bases 4 and 2, height 1: ybar = h (b1 + 2 b2) / (3 (b1 + b2)) = 8 / 18
+    expect(g.centroid.x).toBeCloseTo(2, 14);
+    expect(g.centroid.y).toBeCloseTo(8 / 18, 14);
+  });
+
+  it('accepts 8 hull vertices and rejects 9', () => {
+    const ring = (n: number) =>
+      Array.from({ length: n }, (_, i) => ({
+        x: Math.cos((2 * Math.PI * i) / n),
+        y: Math.sin((2 * Math.PI * i) / n),
+      }));
+    expect(Shape.polygon(ring(8)).count).toBe(8);
+    expectThrows(() => Shape.polygon(ring(9)), 'points', 'at most 8', 'it has 9');
+  });
+});
+
+describe('Shape factories', () => {
+  it('build frozen geometry with type and kind', () => {
+    const c = Shape.circle(0.5, { x: 1, y: 2 });
+    expect(c).toEqual({ type: 'circle', kind: CIRCLE, center: { x: 1, y: 2 }, radius: 0.5 });
+    expect(Object.isFrozen(c) && Object.isFrozen(c.center)).toBe(true);
+    expect(Shape.circle(1).center).toEqual({ x: 0, y: 0 });
+    const cap = Shape.capsule({ x: -1, y: 0 }, { x: 1, y: 0 }, 0.25);
+    expect([cap.type, cap.kind, cap.radius]).toEqual(['capsule', CAPSULE, 0.25]);
+    const seg = Shape.segment({ x: -1, y: 0 }, { x: 1, y: 0 });
+    expect([seg.type, seg.kind]).toEqual(['segment', SEGMENT]);
+    expect(Object.isFrozen(seg.point1)).toBe(true);
+  });
+
+  it('box: rotated corners, outward normals and centre', () => {
+    const angle = 0.3;
+    const g = Shape.box(2, 1, { x: 1, y: -1 }, angle);
+    const c = Math.cos(angle);
+    const s = Math.sin(angle);
+    const local = [
+      [-2, -1],
+      [2, -1],
+      [2, 1],
+      [-2, 1],
+    ];
+    local.forEach(([x, y], i) => {
+      expect(g.vertices[i].x).toBeCloseTo(1 + c * x - s * y, 14);
+      expect(g.vertices[i].y).toBeCloseTo(-1 + s * x + c * y, 14);
+    });
+    expect(g.normals[1].x).toBeCloseTo(c, 14);
+    expect(g.normals[1].y).toBeCloseTo(s, 14);
+    expect(g.centroid).toEqual({ x: 1, y: -1 });
+    expect(g.radius).toBe(0);
+  });
+
+  it('rejects bad input with a FulcrumError naming the argument and the value', () => {
+    expectThrows(() => Shape.circle(-1), 'radius', '-1');
+    expectThrows(() => Shape.circle(0), 'radius', 'got 0');
+    expectThrows(() => Shape.circle(Number.NaN), 'radius', 'NaN');
+    expectThrows(() => Shape.circle(1, { x: Number.POSITIVE_INFINITY, y: 0 } as never), 'center');
+    expectThrows(() => Shape.circle(1, 'here' as never), 'center', '"here"');
+    expectThrows(() => Shape.box(0, 1), 'halfWidth', 'got 0');
+    expectThrows(() => Shape.box(1, -2), 'halfHeight', '-2');
+    expectThrows(() => Shape.box(1, 1, { x: 0, y: 0 }, Number.NaN), 'angle', 'NaN');
+    expectThrows(() => Shape.box(1, 1, { x: 0 } as never), 'center');
+    expectThrows(() => Shape.polygon('square' as never), 'points', '"square"');
+    expectThrows(() => Shape.polygon([{ x: 0, y: 0 }, { x: 1, y: 0 }, null as never]), 'points[2]', 'null');
+    expectThrows(
+      () =>
+        Shape.polygon([
+          { x: 0, y: 0 },
+          { x: 1, y: 0 },
+          { x: 1, y: Number.NaN },
+        ]),
+      'points[2]',
+    );
+    expectThrows(
+      () =>
+        Shape.polygon([
+          { x: 0, y: 0 },
+          { x: 1, y: 0 },
+        ]),
+      'points',
+      'at least 3',
+    );
+    expectThrows(
+      () =>
+        Shape.polygon([
+          { x: 0, y: 0 },
+          { x: 1, y: 0 },
+          { x: 0.001, y: 0.002 },
+        ]),
+      'points',
+      'at least 3',
+    );
+    expectThrows(
+      () =>
+        Shape.polygon([
+          { x: 0, y: 0 },
+          { x: 1, y: 1 },
+          { x: 2, y: 2 },
+          { x: 3, y: 3.001 },
+        ]),
+      'points',
+      'collinear',
+    );
+    const square = [
+      { x: 0, y: 0 },
+      { x: 1, y: 0 },
+      { x: 1, y: 1 },
+    ];
+    expectThrows(() => Shape.polygon(square, -0.1), 'radius', '-0.1');
+    expect(Shape.polygon(square, 0).radius).toBe(0);
+    expectThrows(() => Shape.capsule({ x: 0, y: 0 }, { x: 0, y: 0 }, 1), 'p2', 'from p1');
+    expectThrows(() => Shape.capsule({ x: 0, y: 0 }, { x: 0.004, y: 0 }, 1), 'p2', '0.004');
+    expectThrows(() => Shape.capsule({ x: 0, y: 0 }, { x: 1, y: 0 }, 0), 'radius', 'got 0');
+    expectThrows(() => Shape.capsule({ x: Number.NaN, y: 0 }, { x: 1, y: 0 }, 1), 'p1');
+    expectThrows(() => Shape.segment({ x: 1, y: 1 }, { x: 1, y: 1 }), 'p2');
+    expectThrows(() => Shape.segment({ x: 1, y: 1 }, undefined as never), 'p2', 'undefined');
+  });
+});
+
+describe('computeShapeBounds', () => {
+  it('is the tight world box including the radius', () => {
+    const out = makeBounds();
+    const t = xf(1, 2, Math.PI / 4);
+    computeShapeBounds(Shape.box(1, 1), t, out);
+    expect(out.minX).toBeCloseTo(1 - Math.SQRT2, 14);
+    expect(out.maxY).toBeCloseTo(2 + Math.SQRT2, 14);
+    computeShapeBounds(Shape.polygon(Shape.box(1, 1).vertices, 0.5), xf(0, 0, 0), out);
+    expect(out).toEqual({ minX: -1.5, minY: -1.5, maxX: 1.5, maxY: 1.5 });
+    computeShapeBounds(Shape.circle(0.5, { x: 1, y: 0 }), xf(0, 0, Math.PI / 2), out);
+    expect(out.minX).toBeCloseTo(-0.5, 14);
+    expect(out.minY).toBeCloseTo(0.5, 14);
+    computeShapeBounds(Shape.capsule({ x: -1, y: 0 }, { x: 1, y: 0 }, 0.25), xf(0, 0, 0), out);
+    expect(out).toEqual({ minX: -1.25, minY: -0.25, maxX: 1.25, maxY: 0.25 });
+    computeShapeBounds(Shape.segment({ x: -1, y: 0 }, { x: 1, y: 3 }), xf(1, 1, 0), out);
+    expect(out).toEqual({ minX: 0, minY: 1, maxX: 2, maxY: 4 });
+  });
+});
