@@ -29,8 +29,8 @@ export function maxDisplacement(scene: Scene, from: Float64Array, to: Float64Arr
 /** joint anchors in each body's frame, from the scene's initial layout */
 export function jointLocalAnchors(scene: Scene): Array<{ a: number; b: number; localA: V; localB: V }> {
   return scene.joints.map((j) => {
-    const anchorA = j.type === 'revolute' ? j.anchor : j.anchorA;
-    const anchorB = j.type === 'revolute' ? j.anchor : j.anchorB;
+    const anchorA = j.type === 'distance' ? j.anchorA : j.anchor;
+    const anchorB = j.type === 'distance' ? j.anchorB : j.anchor;
     return {
       a: j.bodyA,
       b: j.bodyB,

@@ -9,6 +9,7 @@ import { fileURLToPath } from 'node:url';
 import { findEngine } from './engines';
 import { type BenchOptions, parseOptions, USAGE } from './options';
 import { topSelfTimes } from './profile';
+import { type RayCastBenchResult, rayCastBenchText, runRayCastBench } from './raycast';
 import { type EngineInfo, formatReport, qualityText } from './report';
 import type { RunResult } from './result';
 import { runWorker } from './spawn-worker';
@@ -118,6 +119,12 @@ async function main(): Promise<void> {
   const results = await runAll(options, engines);
   console.log('');
   console.log(formatReport(engines, options.scenes, results));
+  // Fulcrum-only query timing (issue 4), in this process: a few seconds
+  let raycast: RayCastBenchResult | null = null;
+  if (options.engines.includes('fulcrum')) {
+    raycast = runRayCastBench(options.quick ? 3 : 5);
+    console.log(`\n${rayCastBenchText(raycast)}`);
+  }
 
   const machine = {
     cpu: cpus()[0]?.model ?? 'unknown',
@@ -131,7 +138,7 @@ async function main(): Promise<void> {
   const date = new Date().toISOString();
   writeFileSync(
     json,
-    `${JSON.stringify({ date, quick: options.quick, node: process.version, machine, engines, scenes: options.scenes, results }, null, 2)}\n`,
+    `${JSON.stringify({ date, quick: options.quick, node: process.version, machine, engines, scenes: options.scenes, results, raycast }, null, 2)}\n`,
   );
   const title = `Fulcrum vs peers, ms per step${options.quick ? ' (quick)' : ''}: ${machine.cpu}, Node ${process.version}, ${date.slice(0, 10)}`;
   writeFileSync(svg, svgChart(engines, options.scenes, results, title));

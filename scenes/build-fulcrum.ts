@@ -4,8 +4,7 @@ import type { Scene, SceneShape } from './types';
 
 type WorldDef = NonNullable<ConstructorParameters<typeof World>[0]>;
 type FulcrumBody = ReturnType<World['createBody']>;
-// joints arrive with issue 3; until then a scene with joints cannot be built
-type FulcrumJoint = never;
+type FulcrumJoint = ReturnType<World['createJoint']>;
 
 export interface FulcrumScene {
   world: World;
@@ -54,7 +53,48 @@ export function buildFulcrumWorld(scene: Scene, worldDef: WorldDef = {}): Fulcru
     for (const shape of b.shapes) body.createShape(geometry(shape), material(shape));
     return body;
   });
-  if (scene.joints.length > 0) throw new Error(`scene ${scene.name}: Fulcrum has no joints yet (issue 3)`);
-  const joints: FulcrumJoint[] = [];
+  const joints = scene.joints.map((j) => {
+    const bodyA = bodies[j.bodyA];
+    const bodyB = bodies[j.bodyB];
+    if (j.type === 'revolute') {
+      return world.createJoint({
+        type: 'revolute',
+        bodyA,
+        bodyB,
+        anchor: j.anchor,
+        collideConnected: j.collideConnected ?? false,
+        enableLimit: j.limit !== undefined,
+        lowerAngle: j.limit?.lower ?? 0,
+        upperAngle: j.limit?.upper ?? 0,
+      });
+    }
+    if (j.type === 'wheel') {
+      return world.createJoint({
+        type: 'wheel',
+        bodyA,
+        bodyB,
+        anchor: j.anchor,
+        axis: j.axis,
+        enableSpring: true,
+        hertz: j.spring.hertz,
+        dampingRatio: j.spring.dampingRatio,
+        enableMotor: j.motor !== undefined,
+        motorSpeed: j.motor?.speed ?? 0,
+        maxMotorTorque: j.motor?.maxTorque ?? 0,
+      });
+    }
+    return world.createJoint({
+      type: 'distance',
+      bodyA,
+      bodyB,
+      localAnchorA: bodyA.getLocalPoint(j.anchorA),
+      localAnchorB: bodyB.getLocalPoint(j.anchorB),
+      length: j.length ?? Math.hypot(j.anchorB.x - j.anchorA.x, j.anchorB.y - j.anchorA.y),
+      collideConnected: j.collideConnected ?? false,
+      enableSpring: j.spring !== undefined,
+      hertz: j.spring?.hertz ?? 0,
+      dampingRatio: j.spring?.dampingRatio ?? 0,
+    });
+  });
   return { world, bodies, joints };
 }

@@ -1,6 +1,8 @@
 /** Scene builders shared by tests, examples and benchmarks, and the registry the benchmark runs. */
 import { cardHouse } from './card-house';
+import { bulletsAtPlanks, highDrop, spinningBar } from './continuous';
 import { freeFall } from './free-fall';
+import { bridge, carOnHills, newtonsCradle, pendulum, ragdolls, slingshot } from './joint-scenes';
 import { chain, jointGrid } from './joints';
 import { manyPyramids, pyramid } from './pyramids';
 import { rain } from './rain';
@@ -12,15 +14,24 @@ export { bodyCentroid, bodyMass, shapeArea } from './mass';
 export { createRandom, type Random } from './random';
 export type * from './types';
 export {
+  bridge,
+  bulletsAtPlanks,
   cardHouse,
+  carOnHills,
   chain,
   freeFall,
+  highDrop,
   highMassRatio,
   jointGrid,
   manyPyramids,
   mixedShapesStack,
+  newtonsCradle,
+  pendulum,
   pyramid,
+  ragdolls,
   rain,
+  slingshot,
+  spinningBar,
   tumbler,
   verticalStack,
 };
@@ -38,6 +49,9 @@ export const sceneBuilders: Record<string, (quick?: boolean) => Scene> = {
   'card-house': () => cardHouse({ levels: 3 }),
   'mass-ratio': () => highMassRatio(),
   'mixed-stack': () => mixedShapesStack(),
+  bullets: () => bulletsAtPlanks(),
+  'spinning-bar': () => spinningBar(),
+  'high-drop': () => highDrop(),
 };
 
 /** the scenes `npm run bench` runs by default: the Box2D v3 benchmark set */

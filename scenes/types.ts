@@ -37,7 +37,15 @@ export interface SceneBody {
 
 /** Joints refer to bodies by their index in `bodies`. Anchors are world points. */
 export type SceneJoint =
-  | { type: 'revolute'; bodyA: number; bodyB: number; anchor: V; collideConnected?: boolean }
+  | {
+      type: 'revolute';
+      bodyA: number;
+      bodyB: number;
+      anchor: V;
+      collideConnected?: boolean;
+      /** angle limits relative to the starting pose, radians */
+      limit?: { lower: number; upper: number };
+    }
   | {
       type: 'distance';
       bodyA: number;
@@ -46,6 +54,17 @@ export type SceneJoint =
       anchorB: V;
       length?: number;
       collideConnected?: boolean;
+      /** a damped spring instead of a rigid rod */
+      spring?: { hertz: number; dampingRatio: number };
+    }
+  | {
+      type: 'wheel';
+      bodyA: number;
+      bodyB: number;
+      anchor: V;
+      axis: V;
+      spring: { hertz: number; dampingRatio: number };
+      motor?: { speed: number; maxTorque: number };
     };
 
 export interface Scene {

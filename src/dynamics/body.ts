@@ -15,6 +15,7 @@ import {
   STATE_STRIDE,
   STATIC,
 } from './body-store';
+import type { Joint } from './joints/joint';
 import type { ShapeDef, ShapeHandle } from './shape';
 import type { World } from './world';
 
@@ -171,6 +172,11 @@ export class Body {
 
   get allowSleep(): boolean {
     return (this.world.core.bodies.flags[this.check()] & FLAG_ALLOW_SLEEP) !== 0;
+  }
+
+  /** joints attached to this body, in creation order */
+  get joints(): Joint[] {
+    return this.world.jointsOf(this.check());
   }
 
   /** shapes in creation order */

@@ -40,7 +40,16 @@ const P_TIMP = 8;
 const P_MAX_NIMP = 9;
 /** normal relative velocity before the step (negative when approaching) */
 const P_REL_VEL = 10;
-const P_STRIDE = 11;
+/**
+ * Anchors used to track the separation through the substeps: the contact point moved back onto each
+ * shape's core (by the shape's radius). They turn with the body; for a circle the core point is its
+ * centre, so a fast-spinning ball does not drag its contact point around with it.
+ */
+const P_SAX = 11;
+const P_SAY = 12;
+const P_SBX = 13;
+const P_SBY = 14;
+const P_STRIDE = 15;
 export const CONSTRAINT_STRIDE = C_POINTS + 2 * P_STRIDE;
 
 /** Contact constraints of one step, packed one block per touching contact (no objects). */
@@ -85,6 +94,8 @@ export function prepareContact(
   ny: number,
   friction: number,
   restitution: number,
+  radiusA: number,
+  radiusB: number,
   soft: Softness,
   pointCount: number,
   pointX: Float64Array,
@@ -131,7 +142,19 @@ export function prepareContact(
     d[p + P_RAY] = rAy;
     d[p + P_RBX] = rBx;
     d[p + P_RBY] = rBy;
-    d[p + P_ADJ_SEP] = separation[k] - ((rBx - rAx) * nx + (rBy - rAy) * ny);
+    // the surfaces are separation/2 either side of the point; the cores a radius further in
+    const sep = separation[k];
+    const backA = radiusA + 0.5 * sep;
+    const backB = radiusB + 0.5 * sep;
+    const sAx = rAx - backA * nx;
+    const sAy = rAy - backA * ny;
+    const sBx = rBx + backB * nx;
+    const sBy = rBy + backB * ny;
+    d[p + P_SAX] = sAx;
+    d[p + P_SAY] = sAy;
+    d[p + P_SBX] = sBx;
+    d[p + P_SBY] = sBy;
+    d[p + P_ADJ_SEP] = sep - ((sBx - sAx) * nx + (sBy - sAy) * ny);
     const rnA = rAx * ny - rAy * nx;
     const rnB = rBx * ny - rBy * nx;
     const kN = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
@@ -214,6 +237,28 @@ export function warmStartContacts(cc: ContactConstraints, state: Float64Array): 
     state[sb + S_VY] = vBy;
     state[sb + S_W] = wB;
   }
+}
+
+/** Separation of point `p` now, from the bodies' motion since the step began (see P_SAX). */
+function currentSeparation(
+  d: Float64Array,
+  p: number,
+  dpx: number,
+  dpy: number,
+  qAc: number,
+  qAs: number,
+  qBc: number,
+  qBs: number,
+  nx: number,
+  ny: number,
+): number {
+  const sAx = d[p + P_SAX];
+  const sAy = d[p + P_SAY];
+  const sBx = d[p + P_SBX];
+  const sBy = d[p + P_SBY];
+  const ddx = dpx + (qBc * sBx - qBs * sBy) - (qAc * sAx - qAs * sAy);
+  const ddy = dpy + (qBs * sBx + qBc * sBy) - (qAs * sAx + qAc * sAy);
+  return ddx * nx + ddy * ny + d[p + P_ADJ_SEP];
 }
 
 // Per-point scratch of the normal solve: bias, mass scale and impulse scale of the soft constraint.
@@ -302,14 +347,8 @@ export function solveContacts(
       const r2Bx = d[p2 + P_RBX];
       const r2By = d[p2 + P_RBY];
       // current separations from the motion accumulated since the step began
-      const s1 =
-        (dpx + (qBc * r1Bx - qBs * r1By) - (qAc * r1Ax - qAs * r1Ay)) * nx +
-        (dpy + (qBs * r1Bx + qBc * r1By) - (qAs * r1Ax + qAc * r1Ay)) * ny +
-        d[p1 + P_ADJ_SEP];
-      const s2 =
-        (dpx + (qBc * r2Bx - qBs * r2By) - (qAc * r2Ax - qAs * r2Ay)) * nx +
-        (dpy + (qBs * r2Bx + qBc * r2By) - (qAs * r2Ax + qAc * r2Ay)) * ny +
-        d[p2 + P_ADJ_SEP];
+      const s1 = currentSeparation(d, p1, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
+      const s2 = currentSeparation(d, p2, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
       softTerms(s1, invH, useBias, biasRate, massScale, impulseScale, maxPushSpeed);
       const b1 = bias1;
       const ms1 = mScale1;
@@ -373,10 +412,8 @@ export function solveContacts(
         const rAy = d[p + P_RAY];
         const rBx = d[p + P_RBX];
         const rBy = d[p + P_RBY];
-        const ddx = dpx + (qBc * rBx - qBs * rBy) - (qAc * rAx - qAs * rAy);
-        const ddy = dpy + (qBs * rBx + qBc * rBy) - (qAs * rAx + qAc * rAy);
         softTerms(
-          ddx * nx + ddy * ny + d[p + P_ADJ_SEP],
+          currentSeparation(d, p, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny),
           invH,
           useBias,
           biasRate,

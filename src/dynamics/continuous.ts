@@ -1,10 +1,13 @@
 import { IntList } from '../collision/int-list';
 import { computeShapeBounds } from '../geometry/bounds';
-import { makeProxy, makeShapeProxy } from '../geometry/shape-proxy';
+import { minExtent } from '../geometry/extent';
+import { makeProxy, makeShapeProxy, type ShapeProxy } from '../geometry/shape-proxy';
 import { getSweepTransform, makeSweep } from '../geometry/sweep';
 import { makeTOIOutput, type TOIInput, timeOfImpact } from '../geometry/toi';
+import { CAPSULE, CIRCLE, type Geometry, POLYGON } from '../geometry/types';
 import { makeBounds } from '../math/aabb';
 import { makeTransform } from '../math/vec2';
+import { FLAG_BULLET } from './body-store';
 import { SHAPE_SENSOR, shouldShapesCollide } from './shape-store';
 import type { WorldCore } from './world-core';
 
@@ -16,11 +19,21 @@ const input: TOIInput = {
   maxFraction: 1,
 };
 const output = makeTOIOutput();
+const shapeProxy = input.proxyB;
+/** a small disc at the fast shape's centroid, swept when the whole shape starts out touching */
+const discProxy = makeShapeProxy();
 const candidates = new IntList(64);
 const start = makeTransform();
 const bounds = makeBounds();
 const xf = makeTransform();
 const STATIC_TREE_MASK = 1;
+/** static, kinematic and dynamic trees */
+const ALL_TREES_MASK = 7;
+
+/** Fast bullets of the current step waiting for solveBullets: slot, and start centre and rotation. */
+let bulletCount = 0;
+let bulletSlots = new Int32Array(16);
+let bulletStarts = new Float64Array(16 * 4);
 
 /**
  * Continuous collision of one fast body against static shapes: the body's motion over the step
@@ -35,6 +48,68 @@ export function solveContinuous(
   c1y: number,
   q1c: number,
   q1s: number,
+): void {
+  sweepAgainst(core, b, c1x, c1y, q1c, q1s, STATIC_TREE_MASK);
+}
+
+/**
+ * Records a fast bullet whose continuous collision must wait until every other awake body has its
+ * final transform; `solveBullets` handles it and moves its proxies. Allocation free once warmed up.
+ */
+export function deferBullet(b: number, c1x: number, c1y: number, q1c: number, q1s: number): void {
+  if (bulletCount === bulletSlots.length) {
+    const slots = new Int32Array(2 * bulletCount);
+    slots.set(bulletSlots);
+    bulletSlots = slots;
+    const starts = new Float64Array(8 * bulletCount);
+    starts.set(bulletStarts);
+    bulletStarts = starts;
+  }
+  const i = bulletCount++;
+  bulletSlots[i] = b;
+  bulletStarts[4 * i] = c1x;
+  bulletStarts[4 * i + 1] = c1y;
+  bulletStarts[4 * i + 2] = q1c;
+  bulletStarts[4 * i + 3] = q1s;
+}
+
+/**
+ * Continuous collision of the deferred bullets (in the order they were deferred, ascending slot)
+ * against static shapes and the shapes of kinematic and dynamic non-bullet bodies, which are taken
+ * at their final transform of the step (a conservative approximation: they do not sweep). Bullets do
+ * not sweep against each other. Then moves the bullets' proxies.
+ */
+export function solveBullets(core: WorldCore): void {
+  const bodies = core.bodies;
+  const shapes = core.shapes;
+  const broad = core.broadPhase;
+  for (let i = 0; i < bulletCount; i++) {
+    const b = bulletSlots[i];
+    const k = 4 * i;
+    sweepAgainst(
+      core,
+      b,
+      bulletStarts[k],
+      bulletStarts[k + 1],
+      bulletStarts[k + 2],
+      bulletStarts[k + 3],
+      ALL_TREES_MASK,
+    );
+    for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
+      broad.moveProxy(shapes.proxyKey[s], shapes.minX[s], shapes.minY[s], shapes.maxX[s], shapes.maxY[s]);
+    }
+  }
+  bulletCount = 0;
+}
+
+function sweepAgainst(
+  core: WorldCore,
+  b: number,
+  c1x: number,
+  c1y: number,
+  q1c: number,
+  q1s: number,
+  treeMask: number,
 ): void {
   const bodies = core.bodies;
   const shapes = core.shapes;
@@ -62,13 +137,15 @@ export function solveContinuous(
     const maxX = Math.max(bounds.maxX, shapes.maxX[s]);
     const maxY = Math.max(bounds.maxY, shapes.maxY[s]);
     candidates.clear();
-    core.broadPhase.query(minX, minY, maxX, maxY, STATIC_TREE_MASK, candidates);
+    core.broadPhase.query(minX, minY, maxX, maxY, treeMask, candidates);
     if (candidates.length === 0) continue;
-    makeProxy(g, input.proxyB);
+    makeProxy(g, shapeProxy);
+    let discReady = false;
     for (let i = 0; i < candidates.length; i++) {
       const other = candidates.data[i];
       if ((shapes.flags[other] & SHAPE_SENSOR) !== 0 || !shouldShapesCollide(shapes, s, other)) continue;
       const ob = shapes.body[other];
+      if (ob === b || (bodies.flags[ob] & FLAG_BULLET) !== 0) continue;
       makeProxy(shapes.geometry[other]!, input.proxyA);
       const sa = input.sweepA;
       sa.localCenterX = 0;
@@ -79,7 +156,19 @@ export function solveContinuous(
       sa.q1S = sa.q2S = bodies.qs[ob];
       input.maxFraction = minFraction;
       timeOfImpact(input, output, slop);
-      // a pair already touching at the start (fraction 0) is the contact solver's business
+      if (output.state === 'overlapped' || (output.state === 'hit' && output.fraction === 0)) {
+        // Touching at the start: that contact is the solver's business, but the shape may still be
+        // turning or sliding through the other one (a spinning plank against a wall it already
+        // touches). Sweep a disc of a quarter of the shape's thickness at its centroid instead,
+        // so that at least the shape's core cannot cross.
+        if (!discReady) {
+          loadDisc(g, discProxy);
+          discReady = true;
+        }
+        input.proxyB = discProxy;
+        timeOfImpact(input, output, slop);
+        input.proxyB = shapeProxy;
+      }
       if (
         (output.state === 'hit' || output.state === 'failed') &&
         output.fraction > 0 &&
@@ -98,4 +187,27 @@ export function solveContinuous(
     bodies.updateCenter(b);
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) core.refreshShapeBounds(s);
   }
+}
+
+/** A one-point proxy at the shape's centroid with a quarter of its smallest half-thickness as radius. */
+function loadDisc(g: Geometry, out: ShapeProxy): void {
+  let x: number;
+  let y: number;
+  if (g.kind === CIRCLE) {
+    x = g.center.x;
+    y = g.center.y;
+  } else if (g.kind === CAPSULE) {
+    x = 0.5 * (g.center1.x + g.center2.x);
+    y = 0.5 * (g.center1.y + g.center2.y);
+  } else if (g.kind === POLYGON) {
+    x = g.centroid.x;
+    y = g.centroid.y;
+  } else {
+    x = 0.5 * (g.point1.x + g.point2.x);
+    y = 0.5 * (g.point1.y + g.point2.y);
+  }
+  out.x[0] = x;
+  out.y[0] = y;
+  out.count = 1;
+  out.radius = 0.25 * minExtent(g);
 }

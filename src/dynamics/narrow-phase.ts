@@ -28,6 +28,7 @@ export function createNewContacts(core: WorldCore): void {
     if (kind[bodyA] !== DYNAMIC && kind[bodyB] !== DYNAMIC) continue;
     if ((shapes.flags[a] & shapes.flags[b] & SHAPE_SENSOR) !== 0) continue;
     if (!shouldShapesCollide(shapes, a, b)) continue;
+    if (!core.jointsAllowCollision(bodyA, bodyB)) continue;
     core.createContact(a, b);
   }
 }

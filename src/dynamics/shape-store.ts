@@ -17,6 +17,8 @@ export class ShapeStore extends SlotStore {
   density = new Float64Array(0);
   friction = new Float64Array(0);
   restitution = new Float64Array(0);
+  /** rounding radius of the geometry (circle and capsule radius, polygon radius, 0 for segments) */
+  radius = new Float64Array(0);
   categoryBits = new Uint32Array(0);
   maskBits = new Uint32Array(0);
   groupIndex = new Int32Array(0);
@@ -36,6 +38,7 @@ export class ShapeStore extends SlotStore {
     this.density = growF64(this.density, capacity);
     this.friction = growF64(this.friction, capacity);
     this.restitution = growF64(this.restitution, capacity);
+    this.radius = growF64(this.radius, capacity);
     this.categoryBits = growU32(this.categoryBits, capacity);
     this.maskBits = growU32(this.maskBits, capacity);
     this.groupIndex = growI32(this.groupIndex, capacity);

@@ -1,10 +1,11 @@
 import { growI32 } from '../core/grow';
-import { CONTACT_DAMPING_RATIO, CONTACT_HERTZ } from '../core/settings';
+import { CONTACT_DAMPING_RATIO, CONTACT_HERTZ, JOINT_DAMPING_RATIO, JOINT_HERTZ } from '../core/settings';
 import { integratePositions, integrateVelocities } from './body-solver';
 import {
   DYNAMIC,
   FLAG_ALLOW_SLEEP,
   FLAG_AWAKE,
+  FLAG_BULLET,
   S_DPX,
   S_DPY,
   S_DQC,
@@ -23,7 +24,8 @@ import {
   warmStartContacts,
 } from './contact-solver';
 import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
-import { solveContinuous } from './continuous';
+import { deferBullet, solveBullets, solveContinuous } from './continuous';
+import type { Joint } from './joints/joint';
 import { SHAPE_HIT_EVENTS } from './shape-store';
 import { makeSoftness, type Softness } from './softness';
 import type { WorldCore } from './world-core';
@@ -43,6 +45,37 @@ export function collectAwakeBodies(core: WorldCore): void {
     }
   }
   core.awakeCount = count;
+}
+
+/** Prepares the joints that have an awake body; returns them in creation order. */
+function prepareJoints(core: WorldCore, h: number): Joint[] {
+  const bodies = core.bodies;
+  const ctx = core.jointContext;
+  ctx.state = bodies.state;
+  ctx.invMass = bodies.invMass;
+  ctx.invInertia = bodies.invInertia;
+  ctx.cx = bodies.cx;
+  ctx.cy = bodies.cy;
+  ctx.qc = bodies.qc;
+  ctx.qs = bodies.qs;
+  ctx.lcx = bodies.lcx;
+  ctx.lcy = bodies.lcy;
+  ctx.h = h;
+  ctx.invH = 1 / h;
+  makeSoftness(JOINT_HERTZ, JOINT_DAMPING_RATIO, h, ctx.jointSoftness);
+  const active = core.activeJoints;
+  active.length = 0;
+  for (const joint of core.joints) {
+    if (
+      (bodies.flags[joint.bodyA.slot] & FLAG_AWAKE) === 0 &&
+      (bodies.flags[joint.bodyB.slot] & FLAG_AWAKE) === 0
+    ) {
+      continue;
+    }
+    joint.prepare(ctx);
+    active.push(joint);
+  }
+  return active;
 }
 
 /** Builds one constraint per touching solid contact that has an awake body. */
@@ -98,6 +131,8 @@ function prepareContacts(core: WorldCore, h: number): void {
       contacts.normalY[c],
       Math.sqrt(shapes.friction[sA] * shapes.friction[sB]),
       Math.max(shapes.restitution[sA], shapes.restitution[sB]),
+      shapes.radius[sA],
+      shapes.radius[sB],
       anchored ? staticSoftness : contactSoftness,
       contacts.pointCount[c],
       contacts.pointX,
@@ -118,6 +153,9 @@ export function solve(core: WorldCore, dt: number): void {
   const subSteps = core.subSteps;
   const h = dt / subSteps;
   const invH = 1 / h;
+  const joints = prepareJoints(core, h);
+  const jointCount = joints.length;
+  const ctx = core.jointContext;
   prepareContacts(core, h);
   const bodies = core.bodies;
   const state = bodies.state;
@@ -127,9 +165,12 @@ export function solve(core: WorldCore, dt: number): void {
   const settings = core.settings;
   for (let i = 0; i < subSteps; i++) {
     integrateVelocities(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, settings.maxLinearSpeed);
+    for (let j = 0; j < jointCount; j++) joints[j].warmStart(ctx);
     warmStartContacts(cc, state);
+    for (let j = 0; j < jointCount; j++) joints[j].solve(ctx, true);
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
     integratePositions(state, awake, awakeCount, h);
+    for (let j = 0; j < jointCount; j++) joints[j].solve(ctx, false);
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
   }
   applyRestitution(cc, state, settings.restitutionThreshold);
@@ -239,6 +280,11 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
       bodies.kind[b] === DYNAMIC &&
       (Math.sqrt(vx * vx + vy * vy) + bodies.maxExtent[b] * Math.abs(w)) * dt > 0.5 * bodies.minExtent[b]
     ) {
+      if ((bodies.flags[b] & FLAG_BULLET) !== 0) {
+        // bullets also sweep against moving bodies, once those are final: see solveBullets
+        deferBullet(b, c0x, c0y, q0c, q0s);
+        continue;
+      }
       solveContinuous(core, b, c0x, c0y, q0c, q0s);
     }
     for (let sh = bodies.shapeHead[b]; sh !== -1; sh = shapes.next[sh]) {
@@ -251,6 +297,7 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
       );
     }
   }
+  if (continuous) solveBullets(core);
 }
 
 /** Groups awake dynamic bodies into islands through touching contacts and puts slow islands to sleep. */
@@ -264,6 +311,11 @@ export function updateSleep(core: WorldCore): void {
     const a = cc.ids[i * 3];
     const b = cc.ids[i * 3 + 1];
     if (kind[a] === DYNAMIC && kind[b] === DYNAMIC) islands.union(a, b);
+  }
+  for (const joint of core.activeJoints) {
+    const a = joint.bodyA.slot;
+    const b = joint.bodyB.slot;
+    if (a !== b && kind[a] === DYNAMIC && kind[b] === DYNAMIC) islands.union(a, b);
   }
   islands.sleepIslands(bodies, core.awake, core.awakeCount);
 }

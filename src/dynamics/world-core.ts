@@ -15,6 +15,8 @@ import { CONTACT_SENSOR, CONTACT_TOUCHING, ContactStore } from './contact-store'
 import { EventBuffers } from './event-buffers';
 import { GraphColoring } from './graph-color';
 import { Islands } from './island';
+import type { Joint } from './joints/joint';
+import type { JointContext } from './joints/joint-context';
 import { SHAPE_SENSOR, ShapeStore } from './shape-store';
 
 const massScratch: MassData = { mass: 0, centerX: 0, centerY: 0, inertia: 0 };
@@ -46,6 +48,25 @@ export class WorldCore {
   enableContinuous = true;
   hitEventThreshold = 1;
   locked = false;
+  /** joints in creation order, and each body's joints */
+  readonly joints: Joint[] = [];
+  readonly bodyJoints: (Joint[] | undefined)[] = [];
+  /** joints solved in the current step and what they read */
+  readonly activeJoints: Joint[] = [];
+  readonly jointContext: JointContext = {
+    state: new Float64Array(0),
+    invMass: new Float64Array(0),
+    invInertia: new Float64Array(0),
+    cx: new Float64Array(0),
+    cy: new Float64Array(0),
+    qc: new Float64Array(0),
+    qs: new Float64Array(0),
+    lcx: new Float64Array(0),
+    lcy: new Float64Array(0),
+    h: 0,
+    invH: 0,
+    jointSoftness: { biasRate: 0, massScale: 1, impulseScale: 0 },
+  };
   readonly xfA: Transform = makeTransform();
   readonly xfB: Transform = makeTransform();
 
@@ -230,6 +251,33 @@ export class WorldCore {
         }
         this.destroyContact(c, false);
       }
+      e = next;
+    }
+  }
+
+  /** False when a joint without collideConnected links the two bodies. */
+  jointsAllowCollision(bodyA: number, bodyB: number): boolean {
+    const ja = this.bodyJoints[bodyA];
+    const jb = this.bodyJoints[bodyB];
+    if (ja === undefined || jb === undefined) return true;
+    const list = ja.length <= jb.length ? ja : jb;
+    for (const j of list) {
+      if (j.collideConnected) continue;
+      const a = j.bodyA.slot;
+      const b = j.bodyB.slot;
+      if ((a === bodyA && b === bodyB) || (a === bodyB && b === bodyA)) return false;
+    }
+    return true;
+  }
+
+  /** Destroys the contacts between two bodies (a joint that forbids their collision was created). */
+  destroyContactsBetween(bodyA: number, bodyB: number): void {
+    const contacts = this.contacts;
+    let e = this.bodies.contactHead[bodyA];
+    while (e !== -1) {
+      const next = contacts.edgeNext[e];
+      const c = e >> 1;
+      if (contacts.bodyA[c] === bodyB || contacts.bodyB[c] === bodyB) this.destroyContact(c, true);
       e = next;
     }
   }

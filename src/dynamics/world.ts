@@ -10,8 +10,11 @@ import {
   fail,
 } from '../core/errors';
 import { type Geometry, isGeometry, SEGMENT } from '../geometry/types';
+import type { AABB } from '../math/aabb';
 import { makeRotInto } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
+import type { CastHit, QueryFilter, QueryTransform } from '../query/index';
+import * as queries from '../query/index';
 import { BODY_DEF_KEYS, BODY_TYPES, Body, type BodyDef, type BodyType } from './body';
 import {
   DYNAMIC,
@@ -28,6 +31,25 @@ import {
 } from './body-store';
 import { CONTACT_TOUCHING } from './contact-store';
 import { EventDispatcher, type WorldEventMap, type WorldEvents } from './events';
+import {
+  buildJoint,
+  type DistanceJointDef,
+  type JointDef,
+  type MotorJointDef,
+  type MouseJointDef,
+  type PrismaticJointDef,
+  type RevoluteJointDef,
+  type WeldJointDef,
+  type WheelJointDef,
+} from './joints/create-joint';
+import type { DistanceJoint } from './joints/distance-joint';
+import { Joint } from './joints/joint';
+import type { MotorJoint } from './joints/motor-joint';
+import type { MouseJoint } from './joints/mouse-joint';
+import type { PrismaticJoint } from './joints/prismatic-joint';
+import type { RevoluteJoint } from './joints/revolute-joint';
+import type { WeldJoint } from './joints/weld-joint';
+import type { WheelJoint } from './joints/wheel-joint';
 import { createNewContacts, updateContacts } from './narrow-phase';
 import { resolveShapeDef, type ShapeDef, ShapeHandle } from './shape';
 import { collectAwakeBodies, finalizeBodies, solve, updateSleep } from './solver';
@@ -219,6 +241,8 @@ export class World {
     this.checkUnlocked();
     const b = this.checkBody('body', body);
     const core = this.core;
+    for (const joint of core.bodyJoints[b]?.slice() ?? []) this.removeJoint(joint);
+    core.bodyJoints[b] = undefined;
     core.wakeTouching(b);
     const contacts = core.contacts;
     let e = core.bodies.contactHead[b];
@@ -238,6 +262,70 @@ export class World {
     core.islands.remove(core.bodies, b);
     core.bodies.free(b);
     this.bodyHandles[b] = undefined;
+  }
+
+  /** Creates a joint (see JointDef for the types and their options); it wakes both bodies. */
+  createJoint(def: DistanceJointDef): DistanceJoint;
+  createJoint(def: RevoluteJointDef): RevoluteJoint;
+  createJoint(def: PrismaticJointDef): PrismaticJoint;
+  createJoint(def: WeldJointDef): WeldJoint;
+  createJoint(def: WheelJointDef): WheelJoint;
+  createJoint(def: MouseJointDef): MouseJoint;
+  createJoint(def: MotorJointDef): MotorJoint;
+  createJoint(def: JointDef): Joint;
+  createJoint(def: JointDef): Joint {
+    this.checkUnlocked();
+    const joint = buildJoint(this, def);
+    const core = this.core;
+    const a = joint.bodyA.slot;
+    const b = joint.bodyB.slot;
+    core.joints.push(joint);
+    const listA = core.bodyJoints[a] ?? [];
+    core.bodyJoints[a] = listA;
+    listA.push(joint);
+    if (b !== a) {
+      const listB = core.bodyJoints[b] ?? [];
+      core.bodyJoints[b] = listB;
+      listB.push(joint);
+      if (!joint.collideConnected) core.destroyContactsBetween(a, b);
+    }
+    core.wake(a);
+    core.wake(b);
+    return joint;
+  }
+
+  /** Destroys a joint and wakes its bodies. */
+  destroyJoint(joint: Joint): void {
+    this.checkUnlocked();
+    if (!(joint instanceof Joint) || joint.world !== this) fail('joint', joint, 'a Joint of this world');
+    joint.check();
+    this.removeJoint(joint);
+  }
+
+  private removeJoint(joint: Joint): void {
+    const core = this.core;
+    joint.destroyed = true;
+    core.joints.splice(core.joints.indexOf(joint), 1);
+    for (const body of [joint.bodyA, joint.bodyB]) {
+      const list = core.bodyJoints[body.slot];
+      const i = list ? list.indexOf(joint) : -1;
+      if (list && i >= 0) list.splice(i, 1);
+      if (body.isValid) core.wake(body.slot);
+    }
+    // the bodies may collide again: let the broad phase find their pair
+    if (!joint.collideConnected && joint.bodyA.isValid && joint.bodyB.isValid) {
+      for (const shape of joint.bodyA.shapes) core.broadPhase.bufferMove(core.shapes.proxyKey[shape.slot]);
+    }
+  }
+
+  /** Live joints in creation order. */
+  get joints(): readonly Joint[] {
+    return this.core.joints.slice();
+  }
+
+  /** @internal */
+  jointsOf(b: number): Joint[] {
+    return (this.core.bodyJoints[b] ?? []).slice();
   }
 
   /** @internal */
@@ -274,6 +362,7 @@ export class World {
     shapes.density[s] = d.density;
     shapes.friction[s] = d.friction;
     shapes.restitution[s] = d.restitution;
+    shapes.radius[s] = geometry.kind === SEGMENT ? 0 : geometry.radius;
     shapes.categoryBits[s] = d.filter.categoryBits;
     shapes.maskBits[s] = d.filter.maskBits;
     shapes.groupIndex[s] = d.filter.groupIndex;
@@ -409,5 +498,45 @@ export class World {
   /** @internal */
   bodyHandle(b: number): Body {
     return this.bodyHandles[b]!;
+  }
+
+  // Queries (issue 4): rules and orders are documented in src/query/*.ts
+
+  /** The closest shape hit by origin + f * translation (f in [0, 1]), or null. Skips sensors by default. */
+  castRay(origin: Vec2, translation: Vec2, filter?: QueryFilter): CastHit | null {
+    return queries.castRay(this, origin, translation, filter);
+  }
+
+  /** Every shape hit by the ray, sorted by fraction, then by shape slot. Skips sensors by default. */
+  castRayAll(origin: Vec2, translation: Vec2, filter?: QueryFilter): CastHit[] {
+    return queries.castRayAll(this, origin, translation, filter);
+  }
+
+  /** Shapes whose tight AABB overlaps or touches the box, by shape slot. Includes sensors by default. */
+  queryAABB(aabb: AABB, filter?: QueryFilter): ShapeHandle[] {
+    return queries.queryAABB(this, aabb, filter);
+  }
+
+  /** Shapes containing the point (surface included), by shape slot. Includes sensors by default. */
+  queryPoint(point: Vec2, filter?: QueryFilter): ShapeHandle[] {
+    return queries.queryPoint(this, point, filter);
+  }
+
+  /**
+   * The first shape that `geometry`, placed at `transform` ({ position, angle? } or { p, q }) and moved
+   * by `translation`, touches; fraction 0 and normal (0, 0) when it starts touching. Skips sensors by default.
+   */
+  castShape(
+    geometry: Geometry,
+    transform: QueryTransform,
+    translation: Vec2,
+    filter?: QueryFilter,
+  ): CastHit | null {
+    return queries.castShape(this, geometry, transform, translation, filter);
+  }
+
+  /** Shapes overlapping or touching `geometry` placed at `transform`, by shape slot. Includes sensors by default. */
+  overlapShape(geometry: Geometry, transform: QueryTransform, filter?: QueryFilter): ShapeHandle[] {
+    return queries.overlapShape(this, geometry, transform, filter);
   }
 }

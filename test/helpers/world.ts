@@ -9,6 +9,17 @@ export function run(world: World, seconds: number, each?: (t: number) => void): 
   }
 }
 
+/**
+ * Like run(), but yields to the event loop every simulated second so that long tests do not starve
+ * the test runner's worker messages.
+ */
+export async function runYielding(world: World, seconds: number): Promise<void> {
+  for (let t = 0; t < seconds; t++) {
+    run(world, Math.min(1, seconds - t));
+    await new Promise((resolve) => setImmediate(resolve));
+  }
+}
+
 /** A world with a static ground box whose top surface is y = 0. */
 export function groundWorld(
   def: WorldDef = {},

@@ -56,6 +56,6 @@ describe('determinism', () => {
     const b = mixedScene();
     run(b, 10);
     expect(stateHash(a)).toBe(stateHash(b));
-    expect(stateHash(a)).toMatchInlineSnapshot(`1002789959`);
+    expect(stateHash(a)).toMatchInlineSnapshot(`261273143`);
   });
 });

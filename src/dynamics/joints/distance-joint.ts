@@ -1,0 +1,222 @@
+import type { Vec2 } from '../../math/vec2';
+import type { Body } from '../body';
+import { S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { makeSoftness, type Softness } from '../softness';
+import type { World } from '../world';
+import { Joint } from './joint';
+import type { JointContext } from './joint-context';
+
+export interface DistanceOptions {
+  length: number;
+  minLength: number;
+  maxLength: number;
+  enableSpring: boolean;
+  hertz: number;
+  dampingRatio: number;
+}
+
+/**
+ * Keeps the anchors `length` apart. Rigid by default; with `enableSpring` it is a damped spring
+ * (Hooke's law) towards `length`, and `minLength`/`maxLength` bound it like a rope or a stop.
+ * Stiffness k (N/m) and damping c (N·s/m) map to hertz f and ratio z by k = m (2 pi f)^2 and
+ * c = 2 m z (2 pi f), with m the effective mass along the joint.
+ */
+export class DistanceJoint extends Joint {
+  readonly type = 'distance' as const;
+  /** @internal */
+  o: DistanceOptions;
+  private impulse = 0;
+  private lowerImpulse = 0;
+  private upperImpulse = 0;
+  private readonly spring: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+  private ux = 0;
+  private uy = 0;
+
+  constructor(
+    world: World,
+    bodyA: Body,
+    bodyB: Body,
+    localAnchorA: Vec2,
+    localAnchorB: Vec2,
+    collideConnected: boolean,
+    userData: unknown,
+    options: DistanceOptions,
+  ) {
+    super(world, bodyA, bodyB, localAnchorA, localAnchorB, collideConnected, userData);
+    this.o = options;
+  }
+
+  /** Current distance between the anchors. */
+  get currentLength(): number {
+    const a = this.anchorA;
+    const b = this.anchorB;
+    return Math.sqrt((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y));
+  }
+
+  get length(): number {
+    return this.o.length;
+  }
+
+  getReactionForce(): Vec2 {
+    this.check();
+    const f = (this.impulse + this.lowerImpulse - this.upperImpulse) * this.invH;
+    return { x: f * this.ux, y: f * this.uy };
+  }
+
+  getReactionTorque(): number {
+    this.check();
+    return 0;
+  }
+
+  /** @internal */
+  prepare(ctx: JointContext): void {
+    this.prepareBase(ctx);
+    const o = this.o;
+    makeSoftness(o.enableSpring ? o.hertz : 0, o.dampingRatio, ctx.h, this.spring);
+    if (!o.enableSpring || o.minLength === o.maxLength) {
+      this.lowerImpulse = 0;
+      this.upperImpulse = 0;
+    }
+    this.setAxis();
+  }
+
+  private setAxis(): void {
+    const dx = this.dcx + this.rBx - this.rAx;
+    const dy = this.dcy + this.rBy - this.rAy;
+    const len = Math.sqrt(dx * dx + dy * dy);
+    if (len > 1e-12) {
+      this.ux = dx / len;
+      this.uy = dy / len;
+    } else {
+      this.ux = 1;
+      this.uy = 0;
+    }
+  }
+
+  /** @internal */
+  warmStart(ctx: JointContext): void {
+    const state = ctx.state;
+    this.updateAnchors(state);
+    const len = Math.sqrt(this.sepX * this.sepX + this.sepY * this.sepY);
+    if (len > 1e-12) {
+      this.ux = this.sepX / len;
+      this.uy = this.sepY / len;
+    }
+    const total = this.impulse + this.lowerImpulse - this.upperImpulse;
+    const px = total * this.ux;
+    const py = total * this.uy;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    state[sa + S_VX] -= this.mA * px;
+    state[sa + S_VY] -= this.mA * py;
+    state[sa + S_W] -= this.iA * (this.rAx * py - this.rAy * px);
+    state[sb + S_VX] += this.mB * px;
+    state[sb + S_VY] += this.mB * py;
+    state[sb + S_W] += this.iB * (this.rBx * py - this.rBy * px);
+  }
+
+  /** Applies an impulse along the axis and returns nothing; reads and writes the velocities. */
+  private apply(state: Float64Array, impulse: number): void {
+    const px = impulse * this.ux;
+    const py = impulse * this.uy;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    state[sa + S_VX] -= this.mA * px;
+    state[sa + S_VY] -= this.mA * py;
+    state[sa + S_W] -= this.iA * (this.rAx * py - this.rAy * px);
+    state[sb + S_VX] += this.mB * px;
+    state[sb + S_VY] += this.mB * py;
+    state[sb + S_W] += this.iB * (this.rBx * py - this.rBy * px);
+  }
+
+  /** Relative velocity of the anchors along the axis. */
+  private axialSpeed(state: Float64Array): number {
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    const wA = state[sa + S_W];
+    const wB = state[sb + S_W];
+    const dvx = state[sb + S_VX] - wB * this.rBy - state[sa + S_VX] + wA * this.rAy;
+    const dvy = state[sb + S_VY] + wB * this.rBx - state[sa + S_VY] - wA * this.rAx;
+    return dvx * this.ux + dvy * this.uy;
+  }
+
+  /** @internal */
+  solve(ctx: JointContext, useBias: boolean): void {
+    const state = ctx.state;
+    const o = this.o;
+    this.updateAnchors(state);
+    const length = Math.sqrt(this.sepX * this.sepX + this.sepY * this.sepY);
+    if (length > 1e-12) {
+      this.ux = this.sepX / length;
+      this.uy = this.sepY / length;
+    }
+    const crA = this.rAx * this.uy - this.rAy * this.ux;
+    const crB = this.rBx * this.uy - this.rBy * this.ux;
+    const k = this.mA + this.mB + this.iA * crA * crA + this.iB * crB * crB;
+    const axialMass = k > 0 ? 1 / k : 0;
+    const soft = ctx.jointSoftness;
+
+    if (o.enableSpring && o.minLength < o.maxLength) {
+      if (o.hertz > 0) {
+        const C = length - o.length;
+        const impulse =
+          -this.spring.massScale * axialMass * (this.axialSpeed(state) + this.spring.biasRate * C) -
+          this.spring.impulseScale * this.impulse;
+        this.impulse += impulse;
+        this.apply(state, impulse);
+      }
+      if (o.minLength > 0) {
+        const C = length - o.minLength;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (C > 0) bias = C * ctx.invH;
+        else if (useBias) {
+          bias = soft.biasRate * C;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const old = this.lowerImpulse;
+        const next = Math.max(
+          old - massScale * axialMass * (this.axialSpeed(state) + bias) - impulseScale * old,
+          0,
+        );
+        this.lowerImpulse = next;
+        this.apply(state, next - old);
+      }
+      if (Number.isFinite(o.maxLength)) {
+        const C = o.maxLength - length;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (C > 0) bias = C * ctx.invH;
+        else if (useBias) {
+          bias = soft.biasRate * C;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const old = this.upperImpulse;
+        const next = Math.max(
+          old - massScale * axialMass * (-this.axialSpeed(state) + bias) - impulseScale * old,
+          0,
+        );
+        this.upperImpulse = next;
+        this.apply(state, old - next);
+      }
+    } else {
+      // rigid rod
+      const C = length - o.length;
+      let bias = 0;
+      let massScale = 1;
+      let impulseScale = 0;
+      if (useBias) {
+        bias = soft.biasRate * C;
+        massScale = soft.massScale;
+        impulseScale = soft.impulseScale;
+      }
+      const impulse = -massScale * axialMass * (this.axialSpeed(state) + bias) - impulseScale * this.impulse;
+      this.impulse += impulse;
+      this.apply(state, impulse);
+    }
+  }
+}

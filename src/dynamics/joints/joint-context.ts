@@ -1,0 +1,20 @@
+import type { Softness } from '../softness';
+
+/** What every joint needs from the step: the body columns and the substep's constants. */
+export interface JointContext {
+  /** solver state, STATE_STRIDE doubles per body slot (velocities, step deltas) */
+  state: Float64Array;
+  invMass: Float64Array;
+  invInertia: Float64Array;
+  /** centres of mass and rotations at the start of the step */
+  cx: Float64Array;
+  cy: Float64Array;
+  qc: Float64Array;
+  qs: Float64Array;
+  lcx: Float64Array;
+  lcy: Float64Array;
+  h: number;
+  invH: number;
+  /** softness of rigid joints' position correction */
+  jointSoftness: Softness;
+}

@@ -1,0 +1,154 @@
+import { FulcrumError } from '../../core/errors';
+import type { Vec2 } from '../../math/vec2';
+import type { Body } from '../body';
+import { S_DPX, S_DPY, S_DQC, S_DQS, STATE_STRIDE } from '../body-store';
+import type { World } from '../world';
+import type { JointContext } from './joint-context';
+
+export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'mouse' | 'motor';
+
+/**
+ * Base of every joint: two bodies, an anchor on each (in the body's frame, relative to its origin),
+ * and the solver's per-step data. Joints are solved in the same substeps as contacts: warm start,
+ * solve with position correction (soft), relax without it.
+ */
+export abstract class Joint {
+  abstract readonly type: JointType;
+  readonly world: World;
+  readonly bodyA: Body;
+  readonly bodyB: Body;
+  readonly collideConnected: boolean;
+  userData: unknown;
+  /** @internal */
+  destroyed = false;
+  /** @internal anchors in the bodies' frames, relative to their origins */
+  localAnchorAx: number;
+  localAnchorAy: number;
+  localAnchorBx: number;
+  localAnchorBy: number;
+
+  // Solver data of the current step.
+  protected a = 0;
+  protected b = 0;
+  protected mA = 0;
+  protected iA = 0;
+  protected mB = 0;
+  protected iB = 0;
+  /** anchors relative to the centres of mass, world-oriented, at the start of the step */
+  protected rAx0 = 0;
+  protected rAy0 = 0;
+  protected rBx0 = 0;
+  protected rBy0 = 0;
+  /** centre of B minus centre of A at the start of the step */
+  protected dcx = 0;
+  protected dcy = 0;
+  /** anchors rotated by the bodies' rotation so far in this step (see updateAnchors) */
+  protected rAx = 0;
+  protected rAy = 0;
+  protected rBx = 0;
+  protected rBy = 0;
+  /** separation of the anchors (B minus A) after updateAnchors */
+  protected sepX = 0;
+  protected sepY = 0;
+  protected invH = 0;
+
+  constructor(
+    world: World,
+    bodyA: Body,
+    bodyB: Body,
+    localAnchorA: Vec2,
+    localAnchorB: Vec2,
+    collideConnected: boolean,
+    userData: unknown,
+  ) {
+    this.world = world;
+    this.bodyA = bodyA;
+    this.bodyB = bodyB;
+    this.localAnchorAx = localAnchorA.x;
+    this.localAnchorAy = localAnchorA.y;
+    this.localAnchorBx = localAnchorB.x;
+    this.localAnchorBy = localAnchorB.y;
+    this.collideConnected = collideConnected;
+    this.userData = userData;
+  }
+
+  /** @internal */
+  check(): void {
+    if (this.destroyed) throw new FulcrumError('joint has been destroyed');
+  }
+
+  get isValid(): boolean {
+    return !this.destroyed;
+  }
+
+  /** Anchor on body A, in world coordinates. */
+  get anchorA(): Vec2 {
+    this.check();
+    return this.bodyA.getWorldPoint({ x: this.localAnchorAx, y: this.localAnchorAy });
+  }
+
+  /** Anchor on body B, in world coordinates. */
+  get anchorB(): Vec2 {
+    this.check();
+    return this.bodyB.getWorldPoint({ x: this.localAnchorBx, y: this.localAnchorBy });
+  }
+
+  /** Force (N) the joint applied to body B over the last substep. */
+  abstract getReactionForce(): Vec2;
+  /** Torque (N·m) the joint applied to body B over the last substep. */
+  abstract getReactionTorque(): number;
+
+  /** @internal Reads body data and anchors for this step. */
+  prepareBase(ctx: JointContext): void {
+    const a = this.bodyA.slot;
+    const b = this.bodyB.slot;
+    this.a = a;
+    this.b = b;
+    this.mA = ctx.invMass[a];
+    this.iA = ctx.invInertia[a];
+    this.mB = ctx.invMass[b];
+    this.iB = ctx.invInertia[b];
+    this.invH = ctx.invH;
+    let c = ctx.qc[a];
+    let s = ctx.qs[a];
+    let x = this.localAnchorAx - ctx.lcx[a];
+    let y = this.localAnchorAy - ctx.lcy[a];
+    this.rAx0 = c * x - s * y;
+    this.rAy0 = s * x + c * y;
+    c = ctx.qc[b];
+    s = ctx.qs[b];
+    x = this.localAnchorBx - ctx.lcx[b];
+    y = this.localAnchorBy - ctx.lcy[b];
+    this.rBx0 = c * x - s * y;
+    this.rBy0 = s * x + c * y;
+    this.dcx = ctx.cx[b] - ctx.cx[a];
+    this.dcy = ctx.cy[b] - ctx.cy[a];
+    this.rAx = this.rAx0;
+    this.rAy = this.rAy0;
+    this.rBx = this.rBx0;
+    this.rBy = this.rBy0;
+  }
+
+  /** Rotates the anchors by the bodies' rotation so far in the step and measures their separation. */
+  protected updateAnchors(state: Float64Array): void {
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    let c = state[sa + S_DQC];
+    let s = state[sa + S_DQS];
+    this.rAx = c * this.rAx0 - s * this.rAy0;
+    this.rAy = s * this.rAx0 + c * this.rAy0;
+    c = state[sb + S_DQC];
+    s = state[sb + S_DQS];
+    this.rBx = c * this.rBx0 - s * this.rBy0;
+    this.rBy = s * this.rBx0 + c * this.rBy0;
+    this.sepX = state[sb + S_DPX] - state[sa + S_DPX] + this.dcx + this.rBx - this.rAx;
+    this.sepY = state[sb + S_DPY] - state[sa + S_DPY] + this.dcy + this.rBy - this.rAy;
+  }
+
+  /** @internal */
+  abstract prepare(ctx: JointContext): void;
+  /** @internal */
+  abstract warmStart(ctx: JointContext): void;
+  /** @internal */
+  abstract solve(ctx: JointContext, useBias: boolean): void;
+}

@@ -1,0 +1,132 @@
+import type { Vec2 } from '../../math/vec2';
+import type { Body } from '../body';
+import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import type { World } from '../world';
+import { Joint } from './joint';
+import type { JointContext } from './joint-context';
+import { relativeAngle } from './joint-math';
+
+export interface MotorOptions {
+  /** wanted position of B's centre in A's frame */
+  linearOffsetX: number;
+  linearOffsetY: number;
+  /** wanted angle of B relative to A */
+  angularOffset: number;
+  maxForce: number;
+  maxTorque: number;
+  /** fraction of the position error removed per second of step, 0..1 */
+  correctionFactor: number;
+}
+
+/** Drives B towards an offset from A with limited force and torque: moving platforms, top-down friction. */
+export class MotorJoint extends Joint {
+  readonly type = 'motor' as const;
+  /** @internal */
+  o: MotorOptions;
+  private linearX = 0;
+  private linearY = 0;
+  private angularImpulse = 0;
+  private angle0 = 0;
+  private offsetX = 0;
+  private offsetY = 0;
+
+  constructor(
+    world: World,
+    bodyA: Body,
+    bodyB: Body,
+    collideConnected: boolean,
+    userData: unknown,
+    options: MotorOptions,
+  ) {
+    super(world, bodyA, bodyB, { x: 0, y: 0 }, { x: 0, y: 0 }, collideConnected, userData);
+    this.o = options;
+  }
+
+  getReactionForce(): Vec2 {
+    this.check();
+    return { x: this.linearX * this.invH, y: this.linearY * this.invH };
+  }
+
+  getReactionTorque(): number {
+    this.check();
+    return this.angularImpulse * this.invH;
+  }
+
+  /** @internal */
+  prepare(ctx: JointContext): void {
+    // anchors at the centres of mass
+    this.localAnchorAx = ctx.lcx[this.bodyA.slot];
+    this.localAnchorAy = ctx.lcy[this.bodyA.slot];
+    this.localAnchorBx = ctx.lcx[this.bodyB.slot];
+    this.localAnchorBy = ctx.lcy[this.bodyB.slot];
+    this.prepareBase(ctx);
+    const c = ctx.qc[this.a];
+    const s = ctx.qs[this.a];
+    // wanted centre offset in world orientation at the step's start (A's turn during the step is small)
+    const ox = this.o.linearOffsetX - ctx.lcx[this.a];
+    const oy = this.o.linearOffsetY - ctx.lcy[this.a];
+    this.offsetX = c * ox - s * oy;
+    this.offsetY = s * ox + c * oy;
+    this.angle0 = relativeAngle(c, s, ctx.qc[this.b], ctx.qs[this.b]) - this.o.angularOffset;
+  }
+
+  /** @internal */
+  warmStart(ctx: JointContext): void {
+    const state = ctx.state;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    state[sa + S_VX] -= this.mA * this.linearX;
+    state[sa + S_VY] -= this.mA * this.linearY;
+    state[sa + S_W] -= this.iA * this.angularImpulse;
+    state[sb + S_VX] += this.mB * this.linearX;
+    state[sb + S_VY] += this.mB * this.linearY;
+    state[sb + S_W] += this.iB * this.angularImpulse;
+  }
+
+  /** @internal */
+  solve(ctx: JointContext, _useBias: boolean): void {
+    const state = ctx.state;
+    const o = this.o;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    const correction = o.correctionFactor * ctx.invH;
+    const k = this.iA + this.iB;
+    if (k > 0) {
+      const C =
+        this.angle0 +
+        relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+      const max = o.maxTorque * ctx.h;
+      const old = this.angularImpulse;
+      const cdot = state[sb + S_W] - state[sa + S_W] + correction * C;
+      this.angularImpulse = Math.max(-max, Math.min(old - cdot / k, max));
+      const impulse = this.angularImpulse - old;
+      state[sa + S_W] -= this.iA * impulse;
+      state[sb + S_W] += this.iB * impulse;
+    }
+    const m = this.mA + this.mB;
+    if (m > 0) {
+      this.updateAnchors(state);
+      const cx = this.sepX - this.offsetX;
+      const cy = this.sepY - this.offsetY;
+      const cdotX = state[sb + S_VX] - state[sa + S_VX] + correction * cx;
+      const cdotY = state[sb + S_VY] - state[sa + S_VY] + correction * cy;
+      const oldX = this.linearX;
+      const oldY = this.linearY;
+      let ix = oldX - cdotX / m;
+      let iy = oldY - cdotY / m;
+      const max = o.maxForce * ctx.h;
+      const len2 = ix * ix + iy * iy;
+      if (len2 > max * max) {
+        const scale = max / Math.sqrt(len2);
+        ix *= scale;
+        iy *= scale;
+      }
+      this.linearX = ix;
+      this.linearY = iy;
+      state[sa + S_VX] -= this.mA * (ix - oldX);
+      state[sa + S_VY] -= this.mA * (iy - oldY);
+      state[sb + S_VX] += this.mB * (ix - oldX);
+      state[sb + S_VY] += this.mB * (iy - oldY);
+    }
+  }
+}

@@ -1,0 +1,104 @@
+import type { Vec2 } from '../../math/vec2';
+import type { Body } from '../body';
+import { S_DQC, S_DQS, S_W, STATE_STRIDE } from '../body-store';
+import type { World } from '../world';
+import type { JointContext } from './joint-context';
+import { relativeAngle } from './joint-math';
+import { SliderJoint, type SliderOptions } from './slider-joint';
+
+export interface PrismaticOptions {
+  referenceAngle: number;
+  enableMotor: boolean;
+  motorSpeed: number;
+  maxMotorForce: number;
+}
+
+/** A slider: B moves along an axis fixed in A without turning relative to A; limits, motor, spring. */
+export class PrismaticJoint extends SliderJoint {
+  readonly type = 'prismatic' as const;
+  /** @internal */
+  o: PrismaticOptions;
+  private angularImpulse = 0;
+  private angle0 = 0;
+
+  constructor(
+    world: World,
+    bodyA: Body,
+    bodyB: Body,
+    localAnchorA: Vec2,
+    localAnchorB: Vec2,
+    collideConnected: boolean,
+    userData: unknown,
+    slider: SliderOptions,
+    options: PrismaticOptions,
+  ) {
+    super(world, bodyA, bodyB, localAnchorA, localAnchorB, collideConnected, userData, slider);
+    this.o = options;
+  }
+
+  getReactionForce(): Vec2 {
+    this.check();
+    return this.sliderForce();
+  }
+
+  getReactionTorque(): number {
+    this.check();
+    return this.angularImpulse * this.invH;
+  }
+
+  /** @internal */
+  prepare(ctx: JointContext): void {
+    this.prepareSlider(ctx);
+    this.angle0 =
+      relativeAngle(ctx.qc[this.a], ctx.qs[this.a], ctx.qc[this.b], ctx.qs[this.b]) - this.o.referenceAngle;
+    if (!this.o.enableMotor) this.axialImpulse = 0;
+  }
+
+  /** @internal */
+  warmStart(ctx: JointContext): void {
+    const state = ctx.state;
+    this.warmStartSlider(state);
+    state[this.a * STATE_STRIDE + S_W] -= this.iA * this.angularImpulse;
+    state[this.b * STATE_STRIDE + S_W] += this.iB * this.angularImpulse;
+  }
+
+  /** @internal */
+  solve(ctx: JointContext, useBias: boolean): void {
+    const state = ctx.state;
+    const o = this.o;
+    if (o.enableMotor) {
+      this.updateAxis(state);
+      const max = o.maxMotorForce * ctx.h;
+      const old = this.axialImpulse;
+      this.axialImpulse = Math.max(
+        -max,
+        Math.min(old - this.axialMass * (this.axialSpeed(state) - o.motorSpeed), max),
+      );
+      this.applyAxial(state, this.axialImpulse - old);
+    }
+    this.solveSlider(ctx, useBias);
+    // no rotation relative to A
+    const k = this.iA + this.iB;
+    if (k > 0) {
+      const sa = this.a * STATE_STRIDE;
+      const sb = this.b * STATE_STRIDE;
+      let bias = 0;
+      let massScale = 1;
+      let impulseScale = 0;
+      if (useBias) {
+        const C =
+          this.angle0 +
+          relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+        const soft = ctx.jointSoftness;
+        bias = soft.biasRate * C;
+        massScale = soft.massScale;
+        impulseScale = soft.impulseScale;
+      }
+      const impulse =
+        (-massScale * (state[sb + S_W] - state[sa + S_W] + bias)) / k - impulseScale * this.angularImpulse;
+      this.angularImpulse += impulse;
+      state[sa + S_W] -= this.iA * impulse;
+      state[sb + S_W] += this.iB * impulse;
+    }
+  }
+}

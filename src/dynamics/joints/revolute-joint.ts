@@ -1,0 +1,237 @@
+import type { Vec2 } from '../../math/vec2';
+import type { Body } from '../body';
+import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { makeSoftness, type Softness } from '../softness';
+import type { World } from '../world';
+import { Joint } from './joint';
+import type { JointContext } from './joint-context';
+import { relativeAngle, solve22, solved } from './joint-math';
+
+export interface RevoluteOptions {
+  referenceAngle: number;
+  enableLimit: boolean;
+  lowerAngle: number;
+  upperAngle: number;
+  enableMotor: boolean;
+  motorSpeed: number;
+  maxMotorTorque: number;
+  enableSpring: boolean;
+  hertz: number;
+  dampingRatio: number;
+}
+
+/**
+ * A hinge: the anchors of both bodies stay together and the bodies turn freely about them, within
+ * optional angle limits, driven by an optional motor (speed, torque limit) and an optional rotational
+ * spring towards the reference angle.
+ */
+export class RevoluteJoint extends Joint {
+  readonly type = 'revolute' as const;
+  /** @internal */
+  o: RevoluteOptions;
+  private linearX = 0;
+  private linearY = 0;
+  private springImpulse = 0;
+  private motorImpulse = 0;
+  private lowerImpulse = 0;
+  private upperImpulse = 0;
+  private angle0 = 0;
+  private axialMass = 0;
+  private readonly spring: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+
+  constructor(
+    world: World,
+    bodyA: Body,
+    bodyB: Body,
+    localAnchorA: Vec2,
+    localAnchorB: Vec2,
+    collideConnected: boolean,
+    userData: unknown,
+    options: RevoluteOptions,
+  ) {
+    super(world, bodyA, bodyB, localAnchorA, localAnchorB, collideConnected, userData);
+    this.o = options;
+  }
+
+  /** Angle of B relative to A, minus the reference angle (radians). */
+  get angle(): number {
+    this.check();
+    const a = this.bodyA.rotation;
+    const b = this.bodyB.rotation;
+    return relativeAngle(a.c, a.s, b.c, b.s) - this.o.referenceAngle;
+  }
+
+  get motorSpeed(): number {
+    return this.o.motorSpeed;
+  }
+
+  getReactionForce(): Vec2 {
+    this.check();
+    return { x: this.linearX * this.invH, y: this.linearY * this.invH };
+  }
+
+  getReactionTorque(): number {
+    this.check();
+    return (this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse) * this.invH;
+  }
+
+  /** @internal */
+  prepare(ctx: JointContext): void {
+    this.prepareBase(ctx);
+    const k = this.iA + this.iB;
+    this.axialMass = k > 0 ? 1 / k : 0;
+    this.angle0 =
+      relativeAngle(ctx.qc[this.a], ctx.qs[this.a], ctx.qc[this.b], ctx.qs[this.b]) - this.o.referenceAngle;
+    makeSoftness(this.o.enableSpring ? this.o.hertz : 0, this.o.dampingRatio, ctx.h, this.spring);
+    if (!this.o.enableSpring) this.springImpulse = 0;
+    if (!this.o.enableMotor) this.motorImpulse = 0;
+    if (!this.o.enableLimit) {
+      this.lowerImpulse = 0;
+      this.upperImpulse = 0;
+    }
+  }
+
+  /** @internal */
+  warmStart(ctx: JointContext): void {
+    const state = ctx.state;
+    this.updateAnchors(state);
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    const axial = this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse;
+    const px = this.linearX;
+    const py = this.linearY;
+    state[sa + S_VX] -= this.mA * px;
+    state[sa + S_VY] -= this.mA * py;
+    state[sa + S_W] -= this.iA * (this.rAx * py - this.rAy * px + axial);
+    state[sb + S_VX] += this.mB * px;
+    state[sb + S_VY] += this.mB * py;
+    state[sb + S_W] += this.iB * (this.rBx * py - this.rBy * px + axial);
+  }
+
+  /** Current joint angle from the angle at the step's start and the rotations since. */
+  private currentAngle(state: Float64Array): number {
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    return (
+      this.angle0 + relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS])
+    );
+  }
+
+  /** @internal */
+  solve(ctx: JointContext, useBias: boolean): void {
+    const state = ctx.state;
+    const o = this.o;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    const mA = this.mA;
+    const iA = this.iA;
+    const mB = this.mB;
+    const iB = this.iB;
+    let wA = state[sa + S_W];
+    let wB = state[sb + S_W];
+    const fixedRotation = iA + iB === 0;
+
+    if (o.enableSpring && !fixedRotation) {
+      const C = this.currentAngle(state);
+      const bias = this.spring.biasRate * C;
+      const impulse =
+        -this.spring.massScale * this.axialMass * (wB - wA + bias) -
+        this.spring.impulseScale * this.springImpulse;
+      this.springImpulse += impulse;
+      wA -= iA * impulse;
+      wB += iB * impulse;
+    }
+    if (o.enableMotor && !fixedRotation) {
+      const max = o.maxMotorTorque * ctx.h;
+      const old = this.motorImpulse;
+      this.motorImpulse = Math.max(-max, Math.min(old - this.axialMass * (wB - wA - o.motorSpeed), max));
+      const impulse = this.motorImpulse - old;
+      wA -= iA * impulse;
+      wB += iB * impulse;
+    }
+    if (o.enableLimit && !fixedRotation) {
+      const angle = this.currentAngle(state);
+      const soft = ctx.jointSoftness;
+      // lower limit: angle - lower >= 0
+      {
+        const C = angle - o.lowerAngle;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (C > 0) bias = C * ctx.invH;
+        else if (useBias) {
+          bias = soft.biasRate * C;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const old = this.lowerImpulse;
+        const next = Math.max(old - massScale * this.axialMass * (wB - wA + bias) - impulseScale * old, 0);
+        this.lowerImpulse = next;
+        wA -= iA * (next - old);
+        wB += iB * (next - old);
+      }
+      // upper limit: upper - angle >= 0
+      {
+        const C = o.upperAngle - angle;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (C > 0) bias = C * ctx.invH;
+        else if (useBias) {
+          bias = soft.biasRate * C;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const old = this.upperImpulse;
+        const next = Math.max(old - massScale * this.axialMass * (wA - wB + bias) - impulseScale * old, 0);
+        this.upperImpulse = next;
+        wA += iA * (next - old);
+        wB -= iB * (next - old);
+      }
+    }
+
+    // point-to-point
+    this.updateAnchors(state);
+    const rAx = this.rAx;
+    const rAy = this.rAy;
+    const rBx = this.rBx;
+    const rBy = this.rBy;
+    let vAx = state[sa + S_VX];
+    let vAy = state[sa + S_VY];
+    let vBx = state[sb + S_VX];
+    let vBy = state[sb + S_VY];
+    const cdotX = vBx - wB * rBy - vAx + wA * rAy;
+    const cdotY = vBy + wB * rBx - vAy - wA * rAx;
+    let biasX = 0;
+    let biasY = 0;
+    let massScale = 1;
+    let impulseScale = 0;
+    if (useBias) {
+      const soft = ctx.jointSoftness;
+      biasX = soft.biasRate * this.sepX;
+      biasY = soft.biasRate * this.sepY;
+      massScale = soft.massScale;
+      impulseScale = soft.impulseScale;
+    }
+    const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+    const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+    const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+    solve22(k11, k12, k22, cdotX + biasX, cdotY + biasY);
+    const px = -massScale * solved.x - impulseScale * this.linearX;
+    const py = -massScale * solved.y - impulseScale * this.linearY;
+    this.linearX += px;
+    this.linearY += py;
+    vAx -= mA * px;
+    vAy -= mA * py;
+    wA -= iA * (rAx * py - rAy * px);
+    vBx += mB * px;
+    vBy += mB * py;
+    wB += iB * (rBx * py - rBy * px);
+    state[sa + S_VX] = vAx;
+    state[sa + S_VY] = vAy;
+    state[sa + S_W] = wA;
+    state[sb + S_VX] = vBx;
+    state[sb + S_VY] = vBy;
+    state[sb + S_W] = wB;
+  }
+}

@@ -1,0 +1,222 @@
+import type { Vec2 } from '../../math/vec2';
+import type { Body } from '../body';
+import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { makeSoftness, type Softness } from '../softness';
+import type { World } from '../world';
+import { Joint } from './joint';
+import type { JointContext } from './joint-context';
+
+export interface SliderOptions {
+  /** unit axis in body A's frame */
+  localAxisX: number;
+  localAxisY: number;
+  enableLimit: boolean;
+  lower: number;
+  upper: number;
+  enableSpring: boolean;
+  hertz: number;
+  dampingRatio: number;
+}
+
+/**
+ * Shared part of the prismatic and wheel joints: body B's anchor moves along an axis fixed in body A
+ * (no motion across it), within optional limits, with an optional spring towards translation 0.
+ */
+export abstract class SliderJoint extends Joint {
+  /** @internal */
+  s: SliderOptions;
+  protected perpImpulse = 0;
+  protected springImpulse = 0;
+  protected lowerImpulse = 0;
+  protected upperImpulse = 0;
+  protected axialImpulse = 0;
+  private readonly spring: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+  private axis0x = 1;
+  private axis0y = 0;
+  // current axis and Jacobian terms (updated by updateAxis)
+  protected ux = 1;
+  protected uy = 0;
+  protected a1 = 0;
+  protected a2 = 0;
+  protected axialPosition = 0;
+  protected axialMass = 0;
+
+  constructor(
+    world: World,
+    bodyA: Body,
+    bodyB: Body,
+    localAnchorA: Vec2,
+    localAnchorB: Vec2,
+    collideConnected: boolean,
+    userData: unknown,
+    slider: SliderOptions,
+  ) {
+    super(world, bodyA, bodyB, localAnchorA, localAnchorB, collideConnected, userData);
+    this.s = slider;
+  }
+
+  /** Translation of B's anchor along the axis from A's anchor (m). */
+  get translation(): number {
+    this.check();
+    const a = this.anchorA;
+    const b = this.anchorB;
+    const axis = this.bodyA.getWorldVector({ x: this.s.localAxisX, y: this.s.localAxisY });
+    return (b.x - a.x) * axis.x + (b.y - a.y) * axis.y;
+  }
+
+  /** @internal */
+  prepareSlider(ctx: JointContext): void {
+    this.prepareBase(ctx);
+    const c = ctx.qc[this.a];
+    const s = ctx.qs[this.a];
+    this.axis0x = c * this.s.localAxisX - s * this.s.localAxisY;
+    this.axis0y = s * this.s.localAxisX + c * this.s.localAxisY;
+    makeSoftness(this.s.enableSpring ? this.s.hertz : 0, this.s.dampingRatio, ctx.h, this.spring);
+    if (!this.s.enableSpring) this.springImpulse = 0;
+    if (!this.s.enableLimit) {
+      this.lowerImpulse = 0;
+      this.upperImpulse = 0;
+    }
+  }
+
+  /** Current axis (turned with A), translation and the axial effective mass. */
+  protected updateAxis(state: Float64Array): void {
+    this.updateAnchors(state);
+    const sa = this.a * STATE_STRIDE;
+    const c = state[sa + S_DQC];
+    const s = state[sa + S_DQS];
+    this.ux = c * this.axis0x - s * this.axis0y;
+    this.uy = s * this.axis0x + c * this.axis0y;
+    const dx = this.sepX + this.rAx;
+    const dy = this.sepY + this.rAy;
+    this.a1 = dx * this.uy - dy * this.ux;
+    this.a2 = this.rBx * this.uy - this.rBy * this.ux;
+    this.axialPosition = this.sepX * this.ux + this.sepY * this.uy;
+    const k = this.mA + this.mB + this.iA * this.a1 * this.a1 + this.iB * this.a2 * this.a2;
+    this.axialMass = k > 0 ? 1 / k : 0;
+  }
+
+  protected axialSpeed(state: Float64Array): number {
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    return (
+      (state[sb + S_VX] - state[sa + S_VX]) * this.ux +
+      (state[sb + S_VY] - state[sa + S_VY]) * this.uy +
+      this.a2 * state[sb + S_W] -
+      this.a1 * state[sa + S_W]
+    );
+  }
+
+  protected applyAxial(state: Float64Array, impulse: number): void {
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    state[sa + S_VX] -= this.mA * impulse * this.ux;
+    state[sa + S_VY] -= this.mA * impulse * this.uy;
+    state[sa + S_W] -= this.iA * impulse * this.a1;
+    state[sb + S_VX] += this.mB * impulse * this.ux;
+    state[sb + S_VY] += this.mB * impulse * this.uy;
+    state[sb + S_W] += this.iB * impulse * this.a2;
+  }
+
+  /** Perpendicular impulse: P along perp = (-uy, ux), with its angular terms. */
+  protected applyPerp(state: Float64Array, impulse: number): void {
+    const px = -this.uy;
+    const py = this.ux;
+    const dx = this.sepX + this.rAx;
+    const dy = this.sepY + this.rAy;
+    const s1 = dx * py - dy * px;
+    const s2 = this.rBx * py - this.rBy * px;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    state[sa + S_VX] -= this.mA * impulse * px;
+    state[sa + S_VY] -= this.mA * impulse * py;
+    state[sa + S_W] -= this.iA * impulse * s1;
+    state[sb + S_VX] += this.mB * impulse * px;
+    state[sb + S_VY] += this.mB * impulse * py;
+    state[sb + S_W] += this.iB * impulse * s2;
+  }
+
+  /** Warm starts the slider's own impulses (axial, perpendicular). */
+  protected warmStartSlider(state: Float64Array): void {
+    this.updateAxis(state);
+    this.applyAxial(state, this.springImpulse + this.axialImpulse + this.lowerImpulse - this.upperImpulse);
+    this.applyPerp(state, this.perpImpulse);
+  }
+
+  /** Spring and limits along the axis, then the perpendicular constraint. */
+  protected solveSlider(ctx: JointContext, useBias: boolean): void {
+    const state = ctx.state;
+    const o = this.s;
+    this.updateAxis(state);
+    if (o.enableSpring && o.hertz > 0) {
+      const impulse =
+        -this.spring.massScale *
+          this.axialMass *
+          (this.axialSpeed(state) + this.spring.biasRate * this.axialPosition) -
+        this.spring.impulseScale * this.springImpulse;
+      this.springImpulse += impulse;
+      this.applyAxial(state, impulse);
+    }
+    if (o.enableLimit) {
+      const soft = ctx.jointSoftness;
+      for (let side = 0; side < 2; side++) {
+        const C = side === 0 ? this.axialPosition - o.lower : o.upper - this.axialPosition;
+        const sign = side === 0 ? 1 : -1;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (C > 0) bias = C * ctx.invH;
+        else if (useBias) {
+          bias = soft.biasRate * C;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const old = side === 0 ? this.lowerImpulse : this.upperImpulse;
+        const next = Math.max(
+          old - massScale * this.axialMass * (sign * this.axialSpeed(state) + bias) - impulseScale * old,
+          0,
+        );
+        if (side === 0) this.lowerImpulse = next;
+        else this.upperImpulse = next;
+        this.applyAxial(state, sign * (next - old));
+      }
+    }
+    // no motion across the axis
+    const px = -this.uy;
+    const py = this.ux;
+    const dx = this.sepX + this.rAx;
+    const dy = this.sepY + this.rAy;
+    const s1 = dx * py - dy * px;
+    const s2 = this.rBx * py - this.rBy * px;
+    const k = this.mA + this.mB + this.iA * s1 * s1 + this.iB * s2 * s2;
+    if (k > 0) {
+      const sa = this.a * STATE_STRIDE;
+      const sb = this.b * STATE_STRIDE;
+      const cdot =
+        (state[sb + S_VX] - state[sa + S_VX]) * px +
+        (state[sb + S_VY] - state[sa + S_VY]) * py +
+        s2 * state[sb + S_W] -
+        s1 * state[sa + S_W];
+      let bias = 0;
+      let massScale = 1;
+      let impulseScale = 0;
+      if (useBias) {
+        const soft = ctx.jointSoftness;
+        bias = soft.biasRate * (this.sepX * px + this.sepY * py);
+        massScale = soft.massScale;
+        impulseScale = soft.impulseScale;
+      }
+      const impulse = (-massScale * (cdot + bias)) / k - impulseScale * this.perpImpulse;
+      this.perpImpulse += impulse;
+      this.applyPerp(state, impulse);
+    }
+  }
+
+  /** Force on B from the axial and perpendicular impulses. */
+  protected sliderForce(): Vec2 {
+    const axial =
+      (this.springImpulse + this.axialImpulse + this.lowerImpulse - this.upperImpulse) * this.invH;
+    const perp = this.perpImpulse * this.invH;
+    return { x: axial * this.ux - perp * this.uy, y: axial * this.uy + perp * this.ux };
+  }
+}

@@ -1,0 +1,83 @@
+import type { Vec2 } from '../../math/vec2';
+import type { Body } from '../body';
+import { S_W, STATE_STRIDE } from '../body-store';
+import type { World } from '../world';
+import type { JointContext } from './joint-context';
+import { SliderJoint, type SliderOptions } from './slider-joint';
+
+export interface WheelOptions {
+  enableMotor: boolean;
+  motorSpeed: number;
+  maxMotorTorque: number;
+}
+
+/**
+ * A wheel on a suspension: B's anchor slides along an axis fixed in A on a spring (with optional
+ * limits) and B turns freely, driven by an optional motor.
+ */
+export class WheelJoint extends SliderJoint {
+  readonly type = 'wheel' as const;
+  /** @internal */
+  o: WheelOptions;
+  private motorImpulse = 0;
+
+  constructor(
+    world: World,
+    bodyA: Body,
+    bodyB: Body,
+    localAnchorA: Vec2,
+    localAnchorB: Vec2,
+    collideConnected: boolean,
+    userData: unknown,
+    slider: SliderOptions,
+    options: WheelOptions,
+  ) {
+    super(world, bodyA, bodyB, localAnchorA, localAnchorB, collideConnected, userData, slider);
+    this.o = options;
+  }
+
+  getReactionForce(): Vec2 {
+    this.check();
+    return this.sliderForce();
+  }
+
+  getReactionTorque(): number {
+    this.check();
+    return this.motorImpulse * this.invH;
+  }
+
+  /** @internal */
+  prepare(ctx: JointContext): void {
+    this.prepareSlider(ctx);
+    if (!this.o.enableMotor) this.motorImpulse = 0;
+  }
+
+  /** @internal */
+  warmStart(ctx: JointContext): void {
+    const state = ctx.state;
+    this.warmStartSlider(state);
+    state[this.a * STATE_STRIDE + S_W] -= this.iA * this.motorImpulse;
+    state[this.b * STATE_STRIDE + S_W] += this.iB * this.motorImpulse;
+  }
+
+  /** @internal */
+  solve(ctx: JointContext, useBias: boolean): void {
+    const state = ctx.state;
+    const o = this.o;
+    const k = this.iA + this.iB;
+    if (o.enableMotor && k > 0) {
+      const sa = this.a * STATE_STRIDE;
+      const sb = this.b * STATE_STRIDE;
+      const max = o.maxMotorTorque * ctx.h;
+      const old = this.motorImpulse;
+      this.motorImpulse = Math.max(
+        -max,
+        Math.min(old - (state[sb + S_W] - state[sa + S_W] - o.motorSpeed) / k, max),
+      );
+      const impulse = this.motorImpulse - old;
+      state[sa + S_W] -= this.iA * impulse;
+      state[sb + S_W] += this.iB * impulse;
+    }
+    this.solveSlider(ctx, useBias);
+  }
+}

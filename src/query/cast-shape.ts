@@ -1,0 +1,79 @@
+import { IntList } from '../collision/int-list';
+import type { World } from '../dynamics/world';
+import { computeShapeBounds } from '../geometry/bounds';
+import { makeShapeCastInput, makeShapeCastOutput, shapeCast } from '../geometry/shape-cast';
+import { makeProxy } from '../geometry/shape-proxy';
+import { makeBounds } from '../math/aabb';
+import { checkGeometry, checkPoint, resolveTransform } from './args';
+import { makeResolvedQueryFilter, passesQueryFilter, resolveQueryFilter } from './filter';
+import { type CastHit, makeCastHit } from './hit';
+
+const ALL_TREES = 7;
+const filter = makeResolvedQueryFilter();
+const found = new IntList(64);
+const input = makeShapeCastInput();
+const output = makeShapeCastOutput();
+const bounds = makeBounds();
+
+/**
+ * Moves `geometry` from `transform` along `translation` (no rotation) and returns the first shape it
+ * touches: fraction of the translation, contact point on the hit shape and that shape's outward
+ * normal. A shape that already overlaps or touches at the start is hit at fraction 0 with normal
+ * (0, 0). Sensors are skipped unless filter.includeSensors; ties go to the smaller shape slot.
+ * Candidates come from the box swept by the shape, so very long diagonal casts test more shapes.
+ */
+export function castShape(
+  world: World,
+  geometry: unknown,
+  transform: unknown,
+  translation: unknown,
+  queryFilter?: unknown,
+): CastHit | null {
+  const g = checkGeometry('geometry', geometry);
+  resolveTransform('transform', transform, input.transformB);
+  const t = checkPoint('translation', translation);
+  const tx = t.x;
+  const ty = t.y;
+  resolveQueryFilter(queryFilter, false, filter);
+  const core = world.core;
+  const shapes = core.shapes;
+  computeShapeBounds(g, input.transformB, bounds);
+  found.clear();
+  core.broadPhase.query(
+    bounds.minX + Math.min(tx, 0),
+    bounds.minY + Math.min(ty, 0),
+    bounds.maxX + Math.max(tx, 0),
+    bounds.maxY + Math.max(ty, 0),
+    ALL_TREES,
+    found,
+  );
+  makeProxy(g, input.proxyB);
+  input.translationX = tx;
+  input.translationY = ty;
+  let best = -1;
+  let fraction = 1;
+  let px = 0;
+  let py = 0;
+  let nx = 0;
+  let ny = 0;
+  for (let i = 0; i < found.length; i++) {
+    const s = found.data[i];
+    if (!passesQueryFilter(shapes, s, filter)) continue;
+    makeProxy(shapes.geometry[s]!, input.proxyA);
+    core.fillTransform(shapes.body[s], input.transformA);
+    input.maxFraction = fraction;
+    shapeCast(input, output);
+    if (!output.hit) continue;
+    const f = output.fraction;
+    if (best === -1 || f < fraction || (f === fraction && s < best)) {
+      best = s;
+      fraction = f;
+      px = output.pointX;
+      py = output.pointY;
+      nx = output.normalX;
+      ny = output.normalY;
+    }
+  }
+  if (best === -1) return null;
+  return makeCastHit(world.shapeHandles[best]!, px, py, nx, ny, fraction);
+}

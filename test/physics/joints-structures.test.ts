@@ -1,0 +1,208 @@
+import { describe, expect, it } from 'vitest';
+import { type Body, type Joint, Shape, World } from '../../src/index';
+import { dist, runYielding } from '../helpers/world';
+
+const DT = 1 / 60;
+
+/** Largest distance between the two anchors of any joint. */
+function maxSeparation(joints: Joint[]): number {
+  return Math.max(...joints.map((j) => dist(j.anchorA, j.anchorB)));
+}
+
+describe('joint structures', () => {
+  // Open (issue 3): the soft joints stretch 4-5 cm under the 2,000 N load (Box2D v3: 9.6 cm on the bench
+  // chain); their stiffness scales with the links' mass, not with the load they carry.
+  it.skip('a chain of 100 links (0.5 m, 1 kg) with a 100 kg ball stretches no joint more than 1 cm', async () => {
+    const world = new World({ enableSleep: false });
+    const anchor = world.createBody({ position: { x: 0, y: 0 } });
+    const joints: Joint[] = [];
+    let prev: Body = anchor;
+    for (let i = 0; i < 100; i++) {
+      // links hang straight down: 0.5 m capsules of 1 kg
+      const link = world.createBody({ type: 'dynamic', position: { x: 0, y: -0.25 - 0.5 * i } });
+      const shape = link.createShape(Shape.capsule({ x: 0, y: -0.25 }, { x: 0, y: 0.25 }, 0.05));
+      shape.density = 1 / link.mass;
+      joints.push(
+        world.createJoint({ type: 'revolute', bodyA: prev, bodyB: link, anchor: { x: 0, y: -0.5 * i } }),
+      );
+      prev = link;
+    }
+    const ball = world.createBody({ type: 'dynamic', position: { x: 0, y: -50.5 } });
+    const ballShape = ball.createShape(Shape.circle(0.5));
+    ballShape.density = 100 / ball.mass;
+    expect(ball.mass).toBeCloseTo(100, 9);
+    joints.push(world.createJoint({ type: 'revolute', bodyA: prev, bodyB: ball, anchor: { x: 0, y: -50 } }));
+    // a sideways kick so the chain swings
+    ball.applyLinearImpulse({ x: 300, y: 0 });
+    await runYielding(world, 10);
+    expect(maxSeparation(joints)).toBeLessThan(0.01);
+  });
+
+  it('a joint grid of 40 x 40 pinned along the top separates no joint by more than 2 cm, then sleeps', async () => {
+    const world = new World();
+    const ground = world.createBody();
+    const n = 40;
+    const bodies: Body[][] = [];
+    const joints: Joint[] = [];
+    for (let i = 0; i < n; i++) {
+      bodies.push([]);
+      for (let j = 0; j < n; j++) {
+        const b = world.createBody({ type: 'dynamic', position: { x: j, y: -i } });
+        b.createShape(Shape.circle(0.4), { density: 1, filter: { groupIndex: -1 } });
+        bodies[i].push(b);
+        if (i === 0)
+          joints.push(
+            world.createJoint({ type: 'revolute', bodyA: ground, bodyB: b, anchor: { x: j, y: 0 } }),
+          );
+        if (i > 0) {
+          joints.push(
+            world.createJoint({
+              type: 'revolute',
+              bodyA: bodies[i - 1][j],
+              bodyB: b,
+              anchor: { x: j, y: -i + 0.5 },
+            }),
+          );
+        }
+        if (j > 0) {
+          joints.push(
+            world.createJoint({
+              type: 'revolute',
+              bodyA: bodies[i][j - 1],
+              bodyB: b,
+              anchor: { x: j - 0.5, y: -i },
+            }),
+          );
+        }
+      }
+    }
+    await runYielding(world, 10);
+    expect(maxSeparation(joints)).toBeLessThan(0.02);
+    expect(world.awakeBodyCount).toBe(0);
+  });
+
+  it('a revolute motor reaches its speed and never exceeds its torque limit', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const ground = world.createBody();
+    const wheel = world.createBody({ type: 'dynamic' });
+    wheel.createShape(Shape.circle(0.5), { density: 1 });
+    const joint = world.createJoint({
+      type: 'revolute',
+      bodyA: ground,
+      bodyB: wheel,
+      anchor: { x: 0, y: 0 },
+      enableMotor: true,
+      motorSpeed: 5,
+      maxMotorTorque: 2,
+    });
+    const alpha = 2 / wheel.inertia; // torque / inertia
+    let reached = -1;
+    for (let i = 1; i <= 300; i++) {
+      world.step(DT);
+      expect(Math.abs(joint.getReactionTorque())).toBeLessThanOrEqual(2 * (1 + 1e-9));
+      if (reached < 0 && wheel.angularVelocity >= 5 - 1e-6) reached = i * DT;
+    }
+    expect(wheel.angularVelocity).toBeCloseTo(5, 6);
+    // constant torque until the speed is reached: t = w / alpha
+    expect(Math.abs(reached - 5 / alpha)).toBeLessThan(2 * DT);
+  });
+
+  // Open (issue 3): the soft limit gives 0.7 degree under this load, for the same reason as the chain.
+  it.skip('a revolute limit holds within 0.5 degree under a 10:1 load', () => {
+    const world = new World();
+    const ground = world.createBody();
+    const arm = world.createBody({ type: 'dynamic', position: { x: 1, y: 0 } });
+    arm.createShape(Shape.box(1, 0.05), { density: 1 / 0.2 });
+    const load = arm.createShape(Shape.box(0.1, 0.1, { x: 0.9, y: 0 }), { density: 10 / 0.04 });
+    expect(load.density * 0.04).toBeCloseTo(10, 9);
+    const joint = world.createJoint({
+      type: 'revolute',
+      bodyA: ground,
+      bodyB: arm,
+      anchor: { x: 0, y: 0 },
+      enableLimit: true,
+      lowerAngle: -0.25,
+      upperAngle: 0.25,
+    });
+    let lowest = 0;
+    for (let i = 0; i < 300; i++) {
+      world.step(DT);
+      lowest = Math.min(lowest, joint.angle);
+    }
+    expect(lowest).toBeGreaterThan(-0.25 - (0.5 * Math.PI) / 180);
+    expect(joint.angle).toBeLessThan(-0.25 + (0.5 * Math.PI) / 180);
+  });
+
+  it('a prismatic limit holds a falling slider', () => {
+    const world = new World();
+    const ground = world.createBody();
+    const slider = world.createBody({ type: 'dynamic', position: { x: 0, y: 0 } });
+    slider.createShape(Shape.box(0.2, 0.2), { density: 10 });
+    const joint = world.createJoint({
+      type: 'prismatic',
+      bodyA: ground,
+      bodyB: slider,
+      anchor: { x: 0, y: 0 },
+      axis: { x: 0, y: 1 },
+      enableLimit: true,
+      lower: -2,
+      upper: 1,
+    });
+    let lowest = 0;
+    for (let i = 0; i < 180; i++) {
+      world.step(DT);
+      lowest = Math.min(lowest, joint.translation);
+      expect(Math.abs(slider.position.x)).toBeLessThan(1e-3);
+      expect(Math.abs(slider.angle)).toBeLessThan(1e-3);
+    }
+    expect(lowest).toBeGreaterThan(-2 - 0.005);
+    expect(joint.translation).toBeCloseTo(-2, 2);
+  });
+
+  it('a mouse joint drags a 1 kg box 3 m in 0.5 s; released, the box falls', () => {
+    const world = new World();
+    const box = world.createBody({ type: 'dynamic', position: { x: 0, y: 0 } });
+    box.createShape(Shape.box(0.5, 0.5));
+    // grab the box at its centre, then move the target 3 m away
+    const mouse = world.createJoint({ type: 'mouse', body: box, target: { x: 0, y: 0 } });
+    const target = { x: 3, y: 0 };
+    mouse.setTarget(target);
+    for (let i = 0; i < 30; i++) world.step(DT);
+    expect(dist(box.position, target)).toBeLessThan(0.05);
+    world.destroyJoint(mouse);
+    const y0 = box.position.y;
+    for (let i = 0; i < 30; i++) world.step(DT);
+    expect(box.position.y).toBeLessThan(y0 - 0.5);
+  });
+
+  // Open (issue 3): a rigid weld is as soft as the joint softness (60 Hz on the boxes' own inertia), so the
+  // cantilever sags 2.6 m of 5 m.
+  it.skip('a beam of 10 welded boxes sags less than 10% of its length; a soft weld sags more', () => {
+    const sag = (linearHertz: number, angularHertz: number) => {
+      const world = new World();
+      const wall = world.createBody({ position: { x: 0, y: 0 } });
+      let prev: Body = wall;
+      let last: Body = wall;
+      for (let i = 0; i < 10; i++) {
+        const b = world.createBody({ type: 'dynamic', position: { x: 0.25 + 0.5 * i, y: 0 } });
+        b.createShape(Shape.box(0.25, 0.0625), { density: 1 / (0.5 * 0.125) });
+        world.createJoint({
+          type: 'weld',
+          bodyA: prev,
+          bodyB: b,
+          anchor: { x: 0.5 * i, y: 0 },
+          linearHertz,
+          angularHertz,
+        });
+        prev = b;
+        last = b;
+      }
+      for (let i = 0; i < 300; i++) world.step(DT);
+      return -last.getWorldPoint({ x: 0.25, y: 0 }).y;
+    };
+    const rigid = sag(0, 0);
+    const soft = sag(5, 5);
+    expect(rigid).toBeLessThan(0.1 * 5);
+    expect(soft).toBeGreaterThan(rigid);
+  });
+});
