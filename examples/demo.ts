@@ -1,0 +1,39 @@
+/** What a demo of the gallery is: a function that builds a world, plus a title and a camera. */
+import type { World } from '../src/index';
+import type { CameraView, DebugDrawFlags, Pointer, Render, Runner } from '../src/render/index';
+
+export interface DemoContext {
+  render: Render;
+  runner: Runner;
+  pointer: Pointer;
+  /** the stage element (holds the canvas); a demo may add its own canvas here */
+  stage: HTMLElement;
+  /** a layer over the stage for the demo's own buttons and text */
+  ui: HTMLElement;
+  /** registers a clean-up to run when the demo ends (unsubscribe functions, timers) */
+  track(cleanup: () => void): void;
+  /** a line of text under the title: scores, counters, hints */
+  setStatus(text: string): void;
+  /** adds a button to the demo's layer */
+  button(label: string, onClick: () => void): HTMLButtonElement;
+  /** hides the gallery's canvas renderer: the demo draws the world itself */
+  useExternalRenderer(): void;
+}
+
+export interface DemoInstance {
+  world: World;
+  /** extra state the e2e tests and curious people can read from window.gallery.instance */
+  [key: string]: unknown;
+  dispose?(): void;
+}
+
+export interface Demo {
+  id: string;
+  title: string;
+  description: string;
+  view: CameraView;
+  flags?: Partial<DebugDrawFlags>;
+  /** steps one frame may take at most (default 4) */
+  maxStepsPerFrame?: number;
+  create(ctx: DemoContext): DemoInstance;
+}

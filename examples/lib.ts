@@ -1,0 +1,60 @@
+/** Small helpers the demos share. */
+import { type Body, Shape, type ShapeDef, type Vec2, type World } from '../src/index';
+
+/** A static ground box whose top face is at y = top. */
+export function ground(world: World, halfWidth: number, top = 0, centerX = 0): Body {
+  const body = world.createBody({ position: { x: centerX, y: top - 0.5 } });
+  body.createShape(Shape.box(halfWidth, 0.5), { friction: 0.6 });
+  return body;
+}
+
+/** A dynamic box. */
+export function box(
+  world: World,
+  position: Vec2,
+  halfWidth: number,
+  halfHeight: number,
+  def?: ShapeDef,
+  angle = 0,
+): Body {
+  const body = world.createBody({ type: 'dynamic', position, angle });
+  body.createShape(Shape.box(halfWidth, halfHeight), def);
+  return body;
+}
+
+/** A dynamic ball. */
+export function ball(world: World, position: Vec2, radius: number, def?: ShapeDef): Body {
+  const body = world.createBody({ type: 'dynamic', position });
+  body.createShape(Shape.circle(radius), def);
+  return body;
+}
+
+/** Vertices of a regular polygon around the origin. */
+export function regularPolygon(sides: number, radius: number, phase = Math.PI / 2): Vec2[] {
+  const points: Vec2[] = [];
+  for (let i = 0; i < sides; i++) {
+    const a = phase + (2 * Math.PI * i) / sides;
+    points.push({ x: radius * Math.cos(a), y: radius * Math.sin(a) });
+  }
+  return points;
+}
+
+/** Draws text at a world point, upright, in CSS pixels (inside an 'afterDraw' handler). */
+export function worldText(
+  context: CanvasRenderingContext2D,
+  pixel: number,
+  p: Vec2,
+  text: string,
+  color = '#d8dce4',
+  size = 13,
+): void {
+  context.save();
+  context.translate(p.x, p.y);
+  context.scale(pixel, -pixel);
+  context.fillStyle = color;
+  context.font = `${size}px system-ui, sans-serif`;
+  context.textAlign = 'center';
+  context.textBaseline = 'middle';
+  context.fillText(text, 0, 0);
+  context.restore();
+}

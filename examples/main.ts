@@ -1,0 +1,189 @@
+/** The gallery shell: the demo list, the controls, the readout, and the demo that is running. */
+import { type DebugDrawFlags, defaultDebugDrawFlags, Pointer, Render, Runner } from '../src/render/index';
+import type { Demo, DemoContext, DemoInstance } from './demo';
+import { demos, findDemo } from './registry';
+
+function $(id: string): HTMLElement {
+  const el = document.getElementById(id);
+  if (!el) throw new Error(`gallery: #${id} is missing`);
+  return el;
+}
+
+const canvas = $('view') as HTMLCanvasElement;
+const stage = $('stage');
+const ui = $('demo-ui');
+const render = new Render({ canvas });
+const runner = new Runner({ render });
+const pointer = new Pointer({ render });
+
+const flagLabels: [keyof DebugDrawFlags, string][] = [
+  ['shapes', 'shapes'],
+  ['wireframe', 'wireframe'],
+  ['joints', 'joints'],
+  ['aabbs', 'AABBs'],
+  ['contacts', 'contact points'],
+  ['contactNormals', 'contact normals'],
+  ['velocities', 'velocities'],
+  ['centersOfMass', 'centres of mass'],
+  ['sleeping', 'sleep tint'],
+];
+const flagInputs = new Map<keyof DebugDrawFlags, HTMLInputElement>();
+for (const [key, label] of flagLabels) {
+  const wrap = document.createElement('label');
+  const input = document.createElement('input');
+  input.type = 'checkbox';
+  input.id = `flag-${key}`;
+  input.addEventListener('change', () => {
+    render.flags[key] = input.checked;
+    if (runner.paused) render.draw(runner.interpolator);
+  });
+  wrap.append(input, ` ${label}`);
+  $('flags').append(wrap);
+  flagInputs.set(key, input);
+}
+
+const list = $('demo-list');
+for (const demo of demos) {
+  const a = document.createElement('a');
+  a.href = `#${demo.id}`;
+  a.textContent = demo.title;
+  a.dataset.demo = demo.id;
+  list.append(a);
+}
+
+let current: Demo | null = null;
+let instance: DemoInstance | null = null;
+const cleanups: (() => void)[] = [];
+
+function stopDemo(): void {
+  for (const cleanup of cleanups.splice(0).reverse()) {
+    try {
+      cleanup();
+    } catch (error) {
+      console.error(error);
+    }
+  }
+  instance?.dispose?.();
+  instance = null;
+  pointer.endDrag();
+  ui.replaceChildren();
+  $('demo-status').textContent = '';
+  // undo what a demo may have changed
+  canvas.style.display = '';
+  runner.render = render;
+  pointer.enabled = true;
+  pointer.filter = (body) => body.type === 'dynamic';
+}
+
+function startDemo(demo: Demo): void {
+  stopDemo();
+  current = demo;
+  render.flags = { ...defaultDebugDrawFlags, ...demo.flags };
+  for (const [key, input] of flagInputs) input.checked = render.flags[key];
+  render.resize();
+  render.camera.setView(demo.view);
+  runner.maxStepsPerFrame = demo.maxStepsPerFrame ?? 4;
+  const ctx: DemoContext = {
+    render,
+    runner,
+    pointer,
+    stage,
+    ui,
+    track: (cleanup) => cleanups.push(cleanup),
+    setStatus: (text) => {
+      $('demo-status').textContent = text;
+    },
+    button: (label, onClick) => {
+      const b = document.createElement('button');
+      b.type = 'button';
+      b.textContent = label;
+      b.addEventListener('click', onClick);
+      ui.append(b);
+      return b;
+    },
+    useExternalRenderer: () => {
+      canvas.style.display = 'none';
+      runner.render = null;
+    },
+  };
+  instance = demo.create(ctx);
+  runner.setWorld(instance.world);
+  render.world = instance.world;
+  $('demo-title').textContent = demo.title;
+  $('demo-description').textContent = demo.description;
+  document.title = `${demo.title} — Fulcrum`;
+  list.querySelectorAll('a').forEach((a) => {
+    a.classList.toggle('active', a.dataset.demo === demo.id);
+  });
+  exposeState();
+}
+
+function exposeState(): void {
+  // for the end-to-end tests and the curious: window.gallery in the browser console
+  (window as unknown as { gallery: unknown }).gallery = {
+    runner,
+    render,
+    pointer,
+    demo: current?.id,
+    instance,
+    world: instance?.world,
+  };
+}
+
+function demoFromUrl(): Demo {
+  const id = decodeURIComponent(location.hash.replace(/^#\/?/, ''));
+  return findDemo(id) ?? demos[0];
+}
+
+window.addEventListener('hashchange', () => startDemo(demoFromUrl()));
+
+const pauseButton = $('btn-pause');
+function setPaused(paused: boolean): void {
+  runner.paused = paused;
+  pauseButton.textContent = paused ? 'Play' : 'Pause';
+}
+pauseButton.addEventListener('click', () => setPaused(!runner.paused));
+$('btn-step').addEventListener('click', () => {
+  setPaused(true);
+  runner.step();
+});
+$('btn-reset').addEventListener('click', () => {
+  if (current) startDemo(current);
+});
+const speed = $('speed') as HTMLSelectElement;
+speed.addEventListener('change', () => {
+  runner.timeScale = Number(speed.value);
+});
+window.addEventListener('keydown', (e) => {
+  if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+  if (e.key === ' ') {
+    e.preventDefault();
+    setPaused(!runner.paused);
+  } else if (e.key === 's') {
+    setPaused(true);
+    runner.step();
+  } else if (e.key === 'r' && current) {
+    startDemo(current);
+  }
+});
+
+// the readout: a few times a second is plenty
+const stats = {
+  bodies: $('stat-bodies'),
+  awake: $('stat-awake'),
+  contacts: $('stat-contacts'),
+  step: $('stat-step'),
+  fps: $('stat-fps'),
+};
+setInterval(() => {
+  const world = runner.world;
+  if (!world) return;
+  stats.bodies.textContent = String(world.bodyCount);
+  stats.awake.textContent = String(world.awakeBodyCount);
+  stats.contacts.textContent = String(world.contactCount);
+  stats.step.textContent = runner.stepMs.toFixed(2);
+  stats.fps.textContent = runner.fps.toFixed(0);
+}, 250);
+
+startDemo(demoFromUrl());
+runner.start();

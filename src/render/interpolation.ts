@@ -1,0 +1,84 @@
+import type { Body } from '../dynamics/body';
+import type { World } from '../dynamics/world';
+import type { Transform } from '../math/vec2';
+
+function grow(a: Float64Array<ArrayBuffer>, n: number): Float64Array<ArrayBuffer> {
+  if (a.length >= n) return a;
+  return new Float64Array(Math.max(n, a.length * 2, 64));
+}
+
+/**
+ * Keeps the body transforms of the state before the last step, so that drawing can blend the last
+ * two states: `alpha` = 0 shows the previous state, 1 the current one. Output only: nothing here
+ * feeds the step.
+ */
+export class Interpolator {
+  /** blend factor in [0, 1] between the previous state and the current one */
+  alpha = 1;
+  private world: World | null = null;
+  private count = 0;
+  private px: Float64Array<ArrayBuffer> = new Float64Array(0);
+  private py: Float64Array<ArrayBuffer> = new Float64Array(0);
+  private qc: Float64Array<ArrayBuffer> = new Float64Array(0);
+  private qs: Float64Array<ArrayBuffer> = new Float64Array(0);
+  private generation = new Uint32Array(0);
+
+  /** Remembers the current transforms of every body; call it just before `world.step`. */
+  capture(world: World): void {
+    const bodies = world.core.bodies;
+    const n = bodies.slotCount;
+    this.px = grow(this.px, n);
+    this.py = grow(this.py, n);
+    this.qc = grow(this.qc, n);
+    this.qs = grow(this.qs, n);
+    if (this.generation.length < n) this.generation = new Uint32Array(this.px.length);
+    this.px.set(bodies.px.subarray(0, n));
+    this.py.set(bodies.py.subarray(0, n));
+    this.qc.set(bodies.qc.subarray(0, n));
+    this.qs.set(bodies.qs.subarray(0, n));
+    this.generation.set(bodies.generation.subarray(0, n));
+    this.world = world;
+    this.count = n;
+  }
+
+  /** Forgets the previous state: bodies are drawn where they are until the next capture. */
+  reset(): void {
+    this.world = null;
+    this.count = 0;
+    this.alpha = 1;
+  }
+
+  /** The transform to draw `body` at: blended when the previous state knows it, current otherwise. */
+  transformOf(body: Body, out: Transform): Transform {
+    const bodies = body.world.core.bodies;
+    const b = body.slot;
+    const cx = bodies.px[b];
+    const cy = bodies.py[b];
+    const cc = bodies.qc[b];
+    const cs = bodies.qs[b];
+    const t = this.alpha;
+    if (t >= 1 || body.world !== this.world || b >= this.count || this.generation[b] !== body.generation) {
+      out.p.x = cx;
+      out.p.y = cy;
+      out.q.c = cc;
+      out.q.s = cs;
+      return out;
+    }
+    out.p.x = this.px[b] + (cx - this.px[b]) * t;
+    out.p.y = this.py[b] + (cy - this.py[b]) * t;
+    // normalised linear blend of the rotations (output only)
+    let c = this.qc[b] + (cc - this.qc[b]) * t;
+    let s = this.qs[b] + (cs - this.qs[b]) * t;
+    const length = Math.sqrt(c * c + s * s);
+    if (length > 1e-9) {
+      c /= length;
+      s /= length;
+    } else {
+      c = cc;
+      s = cs;
+    }
+    out.q.c = c;
+    out.q.s = s;
+    return out;
+  }
+}

@@ -1,0 +1,195 @@
+import type { World } from '../dynamics/world';
+import { Emitter } from './emitter';
+import { Interpolator } from './interpolation';
+import type { Render } from './render';
+
+export interface RunnerOptions {
+  world?: World | null;
+  /** drawn after every frame, with interpolation */
+  render?: Render | null;
+  /** the fixed physics step, seconds (default 1/60) */
+  dt?: number;
+  /** most steps one frame may take; time beyond that is dropped, so a slow frame cannot snowball */
+  maxStepsPerFrame?: number;
+  /** simulated seconds per real second (default 1) */
+  timeScale?: number;
+  /** blend the last two states when drawing (default true) */
+  interpolate?: boolean;
+}
+
+export interface FrameEvent {
+  runner: Runner;
+  /** real seconds since the previous frame (0 for the first) */
+  delta: number;
+  /** steps taken this frame */
+  steps: number;
+  /** blend factor the frame is drawn with */
+  alpha: number;
+}
+
+export interface StepEvent {
+  runner: Runner;
+  world: World;
+  dt: number;
+}
+
+export interface RunnerEvents {
+  beforeFrame: FrameEvent;
+  afterFrame: FrameEvent;
+  beforeStep: StepEvent;
+  afterStep: StepEvent;
+}
+
+/** Longest real time one frame accounts for: a tab in the background does not come back to a storm of steps. */
+const MAX_FRAME_SECONDS = 0.25;
+
+/**
+ * The browser loop: requestAnimationFrame, a fixed physics step fed from an accumulator with a cap on
+ * steps per frame, and an interpolation factor so that drawing is smooth at any refresh rate.
+ * Pause, single step and time scale; events before and after each frame and each step.
+ */
+export class Runner {
+  world: World | null;
+  render: Render | null;
+  dt: number;
+  maxStepsPerFrame: number;
+  timeScale: number;
+  interpolate: boolean;
+  paused = false;
+  readonly interpolator = new Interpolator();
+  /** steps taken since the runner was made or `resetStats` */
+  stepCount = 0;
+  frameCount = 0;
+  /** average milliseconds per world.step over the recent steps */
+  stepMs = 0;
+  /** frames per second, averaged */
+  fps = 0;
+  private accumulator = 0;
+  private lastTime: number | null = null;
+  private handle: number | null = null;
+  private readonly emitter = new Emitter<RunnerEvents>();
+  private readonly stepTimes = new Float64Array(60);
+  private stepTimeIndex = 0;
+  private stepTimeCount = 0;
+
+  constructor(options: RunnerOptions = {}) {
+    this.world = options.world ?? null;
+    this.render = options.render ?? null;
+    this.dt = options.dt ?? 1 / 60;
+    this.maxStepsPerFrame = options.maxStepsPerFrame ?? 4;
+    this.timeScale = options.timeScale ?? 1;
+    this.interpolate = options.interpolate ?? true;
+  }
+
+  on<K extends keyof RunnerEvents>(event: K, handler: (e: RunnerEvents[K]) => void): () => void {
+    return this.emitter.on(event, handler);
+  }
+
+  get running(): boolean {
+    return this.handle !== null;
+  }
+
+  /** the blend factor of the last frame */
+  get alpha(): number {
+    return this.interpolator.alpha;
+  }
+
+  start(): void {
+    if (this.handle !== null) return;
+    this.lastTime = null;
+    const loop = (time: number) => {
+      this.handle = requestAnimationFrame(loop);
+      this.tick(time);
+    };
+    this.handle = requestAnimationFrame(loop);
+  }
+
+  stop(): void {
+    if (this.handle !== null) cancelAnimationFrame(this.handle);
+    this.handle = null;
+    this.lastTime = null;
+  }
+
+  /** Swaps in another world (a reset): forgets the accumulated time and the previous state. */
+  setWorld(world: World | null): void {
+    this.world = world;
+    if (this.render) this.render.world = world;
+    this.accumulator = 0;
+    this.interpolator.reset();
+    this.resetStats();
+  }
+
+  resetStats(): void {
+    this.stepCount = 0;
+    this.stepTimeCount = 0;
+    this.stepTimeIndex = 0;
+    this.stepMs = 0;
+  }
+
+  /** Takes exactly one step (also while paused) and draws the result. */
+  step(): void {
+    this.stepWorld();
+    this.accumulator = 0;
+    this.interpolator.alpha = 1;
+    this.render?.draw(this.interpolate ? this.interpolator : null);
+  }
+
+  /**
+   * One frame at time `now` (milliseconds, as requestAnimationFrame gives): steps as the elapsed
+   * time asks, then draws. `start` calls it; tests may call it directly.
+   */
+  tick(now: number): void {
+    const delta =
+      this.lastTime === null ? 0 : Math.min(MAX_FRAME_SECONDS, Math.max(0, (now - this.lastTime) / 1000));
+    this.lastTime = now;
+    if (delta > 0) {
+      // exponential average of the frame rate (output only)
+      const fps = 1 / delta;
+      this.fps = this.fps === 0 ? fps : this.fps * 0.9 + fps * 0.1;
+    }
+    const frame: FrameEvent = { runner: this, delta, steps: 0, alpha: this.interpolator.alpha };
+    this.emitter.emit('beforeFrame', frame);
+    let steps = 0;
+    if (!this.paused && this.world) {
+      this.accumulator += delta * this.timeScale;
+      while (this.accumulator >= this.dt && steps < this.maxStepsPerFrame) {
+        this.stepWorld();
+        this.accumulator -= this.dt;
+        steps++;
+      }
+      // over the cap: drop the backlog but keep the fraction of a step
+      if (this.accumulator >= this.dt) this.accumulator %= this.dt;
+      this.interpolator.alpha = this.interpolate ? this.accumulator / this.dt : 1;
+    } else {
+      this.interpolator.alpha = 1;
+    }
+    this.frameCount++;
+    frame.steps = steps;
+    frame.alpha = this.interpolator.alpha;
+    this.render?.draw(this.interpolate ? this.interpolator : null);
+    this.emitter.emit('afterFrame', frame);
+  }
+
+  private stepWorld(): void {
+    const world = this.world;
+    if (!world) return;
+    const e: StepEvent = { runner: this, world, dt: this.dt };
+    this.emitter.emit('beforeStep', e);
+    if (this.interpolate) this.interpolator.capture(world);
+    const t0 = performance.now();
+    world.step(this.dt);
+    this.recordStepTime(performance.now() - t0);
+    this.stepCount++;
+    this.emitter.emit('afterStep', e);
+  }
+
+  private recordStepTime(ms: number): void {
+    const n = this.stepTimes.length;
+    this.stepTimes[this.stepTimeIndex] = ms;
+    this.stepTimeIndex = (this.stepTimeIndex + 1) % n;
+    if (this.stepTimeCount < n) this.stepTimeCount++;
+    let sum = 0;
+    for (let i = 0; i < this.stepTimeCount; i++) sum += this.stepTimes[i];
+    this.stepMs = sum / this.stepTimeCount;
+  }
+}

@@ -1,0 +1,95 @@
+/** Opening a demo of the built gallery in a page, and reading its state, for the e2e tests. */
+import type { BrowserContext, Page } from 'playwright-core';
+import { decodePng, type Image } from './png';
+
+export interface OpenDemo {
+  page: Page;
+  /** console errors and page errors seen since the page opened */
+  errors: string[];
+  close(): Promise<void>;
+}
+
+/** Opens `#id` in a new page and waits for the runner to have stepped a few times. */
+export async function openDemo(context: BrowserContext, baseUrl: string, id: string): Promise<OpenDemo> {
+  const page = await context.newPage();
+  const errors: string[] = [];
+  page.on('console', (message) => {
+    if (message.type() === 'error') errors.push(`console: ${message.text()}`);
+  });
+  page.on('pageerror', (error) => errors.push(`page: ${error.message}`));
+  await page.goto(`${baseUrl}#${id}`);
+  await page.waitForFunction(
+    (demo) => {
+      const g = (window as unknown as { gallery?: { demo: string; runner: { stepCount: number } } }).gallery;
+      return g !== undefined && g.demo === demo && g.runner.stepCount >= 3;
+    },
+    id,
+    { timeout: 20_000 },
+  );
+  return { page, errors, close: () => page.close() };
+}
+
+export async function stepCount(page: Page): Promise<number> {
+  return page.evaluate(
+    () => (window as unknown as { gallery: { runner: { stepCount: number } } }).gallery.runner.stepCount,
+  );
+}
+
+/** Waits until the runner has taken `steps` more steps. */
+export async function waitForSteps(page: Page, steps: number, timeout = 20_000): Promise<void> {
+  const start = await stepCount(page);
+  await page.waitForFunction(
+    (target) =>
+      (window as unknown as { gallery: { runner: { stepCount: number } } }).gallery.runner.stepCount >=
+      target,
+    start + steps,
+    { timeout },
+  );
+}
+
+/** A screenshot of the stage (the demo's canvas), decoded. */
+export async function shootStage(page: Page, path?: string): Promise<Image> {
+  const png = await page.locator('#stage').screenshot({ path, animations: 'allow' });
+  return decodePng(png);
+}
+
+/** Page (CSS pixel) coordinates of a world point of the current demo. */
+export async function worldToPage(
+  page: Page,
+  p: { x: number; y: number },
+): Promise<{ x: number; y: number }> {
+  return page.evaluate((point) => {
+    const g = (
+      window as unknown as {
+        gallery: {
+          render: {
+            canvas: HTMLCanvasElement;
+            worldToScreen(p: { x: number; y: number }): { x: number; y: number };
+          };
+        };
+      }
+    ).gallery;
+    const canvas = g.render.canvas;
+    const s = g.render.worldToScreen(point);
+    const rect = canvas.getBoundingClientRect();
+    // the canvas may be scaled by CSS: layout pixels to viewport pixels
+    return {
+      x: rect.left + (s.x * rect.width) / canvas.offsetWidth,
+      y: rect.top + (s.y * rect.height) / canvas.offsetHeight,
+    };
+  }, p);
+}
+
+/** Drags with the mouse from `from` to `to` (page pixels) in small moves, holding for `holdMs`. */
+export async function mouseDrag(
+  page: Page,
+  from: { x: number; y: number },
+  to: { x: number; y: number },
+  holdMs = 400,
+): Promise<void> {
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  await page.mouse.move(to.x, to.y, { steps: 12 });
+  await page.waitForTimeout(holdMs);
+  await page.mouse.up();
+}
