@@ -9,6 +9,7 @@ import {
   FulcrumError,
   fail,
 } from '../core/errors';
+import { readSnapshot, writeSnapshot } from '../debug/snapshot';
 import { type Geometry, isGeometry, SEGMENT } from '../geometry/types';
 import type { AABB } from '../math/aabb';
 import { makeRotInto } from '../math/rot';
@@ -538,5 +539,23 @@ export class World {
   /** Shapes overlapping or touching `geometry` placed at `transform`, by shape slot. Includes sensors by default. */
   overlapShape(geometry: Geometry, transform: QueryTransform, filter?: QueryFilter): ShapeHandle[] {
     return queries.overlapShape(this, geometry, transform, filter);
+  }
+
+  // Snapshots (src/debug/snapshot.ts: format, what is kept and what is not)
+
+  /**
+   * The whole state of the world as bytes: `World.restore(bytes)` gives a world whose steps are
+   * bit-identical to this one's. Event handlers are not kept, nor userData that is not plain data.
+   */
+  snapshot(): Uint8Array {
+    this.checkUnlocked();
+    return writeSnapshot(this, () => new World());
+  }
+
+  /** A new world from `world.snapshot()` bytes of this build of Fulcrum, with new handles. */
+  static restore(bytes: Uint8Array): World {
+    const world = new World();
+    readSnapshot(bytes, world, () => new World());
+    return world;
   }
 }
