@@ -1,5 +1,6 @@
 /** Small helpers the demos share. */
-import { type Body, Shape, type ShapeDef, type Vec2, type World } from '../src/index';
+import { type Body, Shape, type ShapeDef, type Transform, type Vec2, type World } from '../src/index';
+import type { Runner } from '../src/render/index';
 
 /** A static ground box whose top face is at y = top. */
 export function ground(world: World, halfWidth: number, top = 0, centerX = 0): Body {
@@ -57,4 +58,31 @@ export function worldText(
   context.textBaseline = 'middle';
   context.fillText(text, 0, 0);
   context.restore();
+}
+
+const scratch: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
+
+/** Where the runner draws a body's origin this frame (between its last two states). */
+export function drawnPosition(runner: Runner, body: Body): Vec2 {
+  if (!runner.interpolate || !body.isValid) return body.position;
+  const t = runner.interpolator.transformOf(body, scratch);
+  return { x: t.p.x, y: t.p.y };
+}
+
+/** Calls `handler(down)` while any of `keys` is held; returns the clean-up. */
+export function onKeys(keys: string[], handler: (key: string, down: boolean) => void): () => void {
+  const listener = (down: boolean) => (e: KeyboardEvent) => {
+    if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+    if (!keys.includes(e.key) || e.repeat) return;
+    e.preventDefault();
+    handler(e.key, down);
+  };
+  const onDown = listener(true);
+  const onUp = listener(false);
+  window.addEventListener('keydown', onDown);
+  window.addEventListener('keyup', onUp);
+  return () => {
+    window.removeEventListener('keydown', onDown);
+    window.removeEventListener('keyup', onUp);
+  };
 }

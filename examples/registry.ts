@@ -1,19 +1,33 @@
 /** Every demo of the gallery, in the order of the list. The URL's hash names the demo: #pyramid. */
 import type { Demo } from './demo';
 import { bulletsDemo } from './demos/bullets';
+import { carDemo } from './demos/car';
 import { cardHouseDemo } from './demos/card-house';
+import { chainBridgeDemo } from './demos/chain-bridge';
+import { clothDemo } from './demos/cloth';
 import { filteringDemo } from './demos/filtering';
 import { golfDemo } from './demos/golf';
+import { newtonsCradleDemo } from './demos/newtons-cradle';
 import { pixiDemo } from './demos/pixi';
 import { planetsDemo } from './demos/planets';
 import { pyramidDemo } from './demos/pyramid';
+import { ragdollsDemo } from './demos/ragdolls';
 import { rayCastDemo } from './demos/ray-cast';
+import { slingshotDemo } from './demos/slingshot';
+import { softBodyDemo } from './demos/soft-body';
 import { stressDemo } from './demos/stress';
 import { tumblerDemo } from './demos/tumbler';
 
 export const demos: readonly Demo[] = [
   pyramidDemo,
   cardHouseDemo,
+  slingshotDemo,
+  newtonsCradleDemo,
+  chainBridgeDemo,
+  ragdollsDemo,
+  carDemo,
+  clothDemo,
+  softBodyDemo,
   planetsDemo,
   golfDemo,
   filteringDemo,

@@ -12,6 +12,7 @@ import type { Scene } from './types';
 
 export { bodyCentroid, bodyMass, shapeArea } from './mass';
 export { createRandom, type Random } from './random';
+export { addBlob, addCloth, type BlobOptions, type ClothOptions, cloth, softBlobs } from './soft-bodies';
 export type * from './types';
 export {
   bridge,

@@ -58,8 +58,18 @@ interface TargetDef {
   radius: number;
 }
 
+/** a static box of rock: hills, ledges and walls */
+export interface TerrainDef {
+  x: number;
+  y: number;
+  halfWidth: number;
+  halfHeight: number;
+  angle?: number;
+}
+
 export interface Level {
   name: string;
+  terrain?: TerrainDef[];
   blocks: BlockDef[];
   targets: TargetDef[];
 }
@@ -110,37 +120,45 @@ function level1(): Level {
 
 function level2(): Level {
   const blocks: BlockDef[] = [];
-  const first = frame(blocks, 10, 0, 2.4, 'stone', 'wood');
-  const second = frame(blocks, 10, first, 1.6, 'wood', 'stone', 0.6);
-  blocks.push({ material: 'ice', x: 14, y: 0.6, halfWidth: 0.6, halfHeight: 0.6 });
+  // a stone hut in the open, a tower on a rock, and a pit hidden behind the rock
+  frame(blocks, 3, 0, 2, 'stone', 'wood');
+  const rockTop = 3;
+  const tower = frame(blocks, 9.5, rockTop, 1.4, 'wood', 'stone', 0.6);
+  blocks.push({ material: 'stone', x: 13.5, y: 0.5, halfWidth: 0.2, halfHeight: 0.5 });
+  blocks.push({ material: 'stone', x: 15.5, y: 0.5, halfWidth: 0.2, halfHeight: 0.5 });
   return {
     name: 'Stone and wood',
+    terrain: [{ x: 9.5, y: rockTop / 2, halfWidth: 1.5, halfHeight: rockTop / 2 }],
     blocks,
     targets: [
-      { x: 10, y: 0.4, radius: 0.4 },
-      { x: 10, y: first + 0.4, radius: 0.4 },
-      { x: 10, y: second + 0.4, radius: 0.4 },
+      { x: 3, y: 0.4, radius: 0.4 },
+      { x: 9.5, y: tower + 0.4, radius: 0.4 },
+      { x: 14.5, y: 0.4, radius: 0.4 },
     ],
   };
 }
 
 function level3(): Level {
   const blocks: BlockDef[] = [];
-  // a stone plinth, an ice hall on it, a wooden tower beside
-  blocks.push({ material: 'stone', x: 11, y: 0.5, halfWidth: 2.5, halfHeight: 0.5 });
-  const hall = frame(blocks, 11, 1, 3, 'ice', 'stone', 0.9);
-  const attic = frame(blocks, 11, hall, 1.4, 'wood', 'wood', 0.5);
-  const tower = frame(blocks, 16, 0, 1.2, 'wood', 'wood', 1.2);
-  blocks.push({ material: 'ice', x: 6.5, y: 0.4, halfWidth: 0.3, halfHeight: 0.4 });
-  blocks.push({ material: 'ice', x: 6.5, y: 1.2, halfWidth: 0.3, halfHeight: 0.4 });
+  // an ice hall on a stone plinth; a lookout on a pillar of rock; a watchtower behind a wall
+  blocks.push({ material: 'stone', x: 2, y: 0.4, halfWidth: 2.2, halfHeight: 0.4 });
+  const hall = frame(blocks, 2, 0.8, 2.6, 'ice', 'stone', 0.8);
+  frame(blocks, 2, hall, 1.2, 'ice', 'wood', 0.45);
+  const pillarTop = 5;
+  const lookout = frame(blocks, 8.5, pillarTop, 1, 'wood', 'wood', 0.5);
+  const watch = frame(blocks, 15.5, frame(blocks, 15.5, 0, 1.4, 'stone', 'ice', 0.9), 1, 'wood', 'wood', 0.5);
   return {
     name: 'The ice fortress',
+    terrain: [
+      { x: 8.5, y: pillarTop / 2, halfWidth: 0.9, halfHeight: pillarTop / 2 },
+      { x: 12.8, y: 1, halfWidth: 0.35, halfHeight: 1 },
+    ],
     blocks,
     targets: [
-      { x: 11, y: 1 + 0.4, radius: 0.4 },
-      { x: 11, y: hall + 0.35, radius: 0.35 },
-      { x: 11, y: attic + 0.35, radius: 0.35 },
-      { x: 16, y: tower + 0.4, radius: 0.4 },
+      { x: 2, y: 0.8 + 0.4, radius: 0.4 },
+      { x: 2, y: hall + 0.35, radius: 0.35 },
+      { x: 8.5, y: lookout + 0.35, radius: 0.35 },
+      { x: 15.5, y: watch + 0.4, radius: 0.4 },
     ],
   };
 }
@@ -167,7 +185,11 @@ export class SlingshotGame {
   /** the flight path of the last bird, for drawing */
   readonly trail: Vec2[] = [];
   sling!: Body;
+  /** the static ground, with the level's rocks */
+  ground!: Body;
   onChange: ((game: SlingshotGame) => void) | null = null;
+  /** true while the loaded bird sits in the sling, not yet shot */
+  private loaded = false;
   private spring: DistanceJoint | null = null;
   private hand: MouseJoint | null = null;
   private pullDirection: Vec2 = { x: 1, y: 0 };
@@ -194,6 +216,7 @@ export class SlingshotGame {
     const world = this.world;
     this.hand = null;
     this.spring = null;
+    this.loaded = false;
     for (const body of [...world.bodies]) world.destroyBody(body);
     this.targets.clear();
     this.targetShapes.clear();
@@ -205,6 +228,7 @@ export class SlingshotGame {
     this.targetsDestroyed = 0;
     this.birdsLeft = BIRDS_PER_LEVEL;
     const ground = world.createBody({ position: { x: 0, y: 0 } });
+    this.ground = ground;
     ground.createShape(Shape.box(40, 0.5, { x: 5, y: -0.5 }), { friction: 0.9 });
     ground.createShape(Shape.box(0.5, 10, { x: 45.5, y: 9.5 }));
     this.sling = world.createBody({ position: ANCHOR });
@@ -213,6 +237,11 @@ export class SlingshotGame {
     this.sling.createShape(Shape.capsule({ x: 0, y: -0.9 }, { x: -0.45, y: 0.25 }, 0.1), noCollide);
     this.sling.createShape(Shape.capsule({ x: 0, y: -0.9 }, { x: 0.45, y: 0.25 }, 0.1), noCollide);
     const level = levels[this.level - 1]();
+    for (const t of level.terrain ?? []) {
+      ground.createShape(Shape.box(t.halfWidth, t.halfHeight, { x: t.x, y: t.y }, t.angle ?? 0), {
+        friction: 0.9,
+      });
+    }
     for (const b of level.blocks) {
       const m = materials[b.material];
       const body = world.createBody({ type: 'dynamic', position: { x: b.x, y: b.y }, angle: b.angle ?? 0 });
@@ -248,6 +277,7 @@ export class SlingshotGame {
     const bird = this.world.createBody({ type: 'dynamic', position: ANCHOR, bullet: true });
     bird.createShape(Shape.circle(BIRD_RADIUS), { density: 4, friction: 0.6, restitution: 0.3 });
     this.bird = bird;
+    this.loaded = true;
     this.spring = this.world.createJoint({
       type: 'distance',
       bodyA: this.sling,
@@ -302,8 +332,19 @@ export class SlingshotGame {
     this.hand.setTarget(this.clampPull(point));
   }
 
+  /** Birds not shot yet: the one in the sling and the ones waiting. */
+  get birdsUnused(): number {
+    return this.birdsLeft + (this.loaded ? 1 : 0);
+  }
+
   /** Lets go: a long enough pull launches the bird, a short one lets it back into the sling. */
   release(): void {
+    if (this.hand && this.state !== 'aiming') {
+      // the level ended while the bird was held
+      this.world.destroyJoint(this.hand);
+      this.hand = null;
+      return;
+    }
     if (this.state !== 'aiming' || !this.hand || !this.bird) return;
     this.world.destroyJoint(this.hand);
     this.hand = null;
@@ -316,6 +357,7 @@ export class SlingshotGame {
     } else {
       this.pullDirection = { x: dx / d, y: dy / d };
       this.state = 'flying';
+      this.loaded = false;
       this.shots++;
       this.trail.length = 0;
       this.flightSteps = 0;
@@ -373,7 +415,7 @@ export class SlingshotGame {
     }
     if (this.targets.size === 0 && this.state !== 'won') {
       this.state = 'won';
-      this.score += BIRD_BONUS * this.birdsLeft;
+      this.score += BIRD_BONUS * this.birdsUnused;
       this.changed();
     }
   }

@@ -148,3 +148,110 @@ describe('pointer drag', () => {
     }
   });
 });
+
+interface SlingshotView {
+  state: string;
+  targets: number;
+  destroyed: number;
+  shots: number;
+  score: number;
+  bird: BodyView | null;
+  anchor: BodyView;
+}
+
+describe('the slingshot game', () => {
+  /** the pull, from the sling's anchor, that the tuning found to clear level 1 in one or two shots */
+  const PULL = { x: -2.45, y: -0.8 };
+
+  const read = (page: import('playwright-core').Page) =>
+    page.evaluate((): SlingshotView => {
+      const instance = (window as unknown as GalleryWindow).gallery.instance;
+      const game = instance.game as {
+        state: string;
+        targets: Set<unknown>;
+        targetsDestroyed: number;
+        shots: number;
+        score: number;
+        bird: { position: BodyView } | null;
+      };
+      return {
+        state: game.state,
+        targets: game.targets.size,
+        destroyed: game.targetsDestroyed,
+        shots: game.shots,
+        score: game.score,
+        bird: game.bird ? game.bird.position : null,
+        anchor: instance.anchor as BodyView,
+      };
+    });
+
+  /** the state of the game, once it satisfies `states` */
+  const waitForState = (page: import('playwright-core').Page, states: string[], timeout = 20_000) =>
+    page.waitForFunction(
+      (wanted) => {
+        const game = (window as unknown as GalleryWindow).gallery.instance.game as { state: string };
+        return wanted.includes(game.state);
+      },
+      states,
+      { timeout },
+    );
+
+  it('a mouse drag and release destroys a target, and a few shots win level 1', async () => {
+    const open = await openDemo(browser.context, url, 'slingshot');
+    const page = open.page;
+    try {
+      await waitForSteps(page, 20);
+      // twice the speed: the flights take half as long (the steps are the same)
+      await page.selectOption('#speed', '2');
+      const shoot = async () => {
+        const before = await read(page);
+        expect(before.state).toBe('ready');
+        if (!before.bird) throw new Error('no bird in the sling');
+        const from = await worldToPage(page, before.bird);
+        const to = await worldToPage(page, { x: before.anchor.x + PULL.x, y: before.anchor.y + PULL.y });
+        await mouseDrag(page, from, to, 500);
+        expect((await read(page)).shots).toBe(before.shots + 1);
+      };
+
+      await shoot();
+      await page.waitForFunction(
+        () =>
+          ((window as unknown as GalleryWindow).gallery.instance.game as { targetsDestroyed: number })
+            .targetsDestroyed >= 1,
+        undefined,
+        { timeout: 15_000 },
+      );
+      await shootStage(page, resolve(SCREENSHOTS, 'slingshot-hit.png'));
+      expect((await read(page)).destroyed).toBeGreaterThanOrEqual(1);
+
+      for (let shot = 2; shot <= 4; shot++) {
+        await waitForState(page, ['ready', 'won', 'lost']);
+        const now = await read(page);
+        if (now.state !== 'ready') break;
+        await shoot();
+      }
+      await waitForState(page, ['won', 'lost']);
+      const end = await read(page);
+      expect(end.state).toBe('won');
+      expect(end.targets).toBe(0);
+      // the page says so
+      expect(await page.getAttribute('#sling-message', 'data-state')).toBe('won');
+      expect(await page.textContent('#sling-message')).toMatch(/Level cleared/);
+      const score = Number((await page.textContent('#sling-score'))?.replace(/\D+/g, ''));
+      expect(score).toBe(end.score);
+      expect(score).toBeGreaterThanOrEqual(1000);
+      expect(await page.isDisabled('#sling-next')).toBe(false);
+      await shootStage(page, resolve(SCREENSHOTS, 'slingshot-won.png'));
+      // on to level 2
+      await page.click('#sling-next');
+      await page.waitForFunction(() =>
+        document.getElementById('sling-level')?.textContent?.startsWith('Level 2'),
+      );
+      await waitForSteps(page, 10);
+      await shootStage(page, resolve(SCREENSHOTS, 'slingshot-level2.png'));
+      expect(open.errors).toEqual([]);
+    } finally {
+      await open.close();
+    }
+  });
+});
