@@ -210,6 +210,11 @@ export class BroadPhase {
     return this.trees[key & 3].getBounds(key >> 2, out);
   }
 
+  /** Whether the fat boxes of two proxies overlap (or touch). */
+  fatBoxesOverlap(keyA: number, keyB: number): boolean {
+    return this.trees[keyA & 3].overlaps(keyA >> 2, this.trees[keyB & 3], keyB >> 2);
+  }
+
   getShapeId(key: number): number {
     return this.trees[key & 3].getUserData(key >> 2);
   }

@@ -115,6 +115,15 @@ export class DynamicTree {
     return out;
   }
 
+  /** Whether the box of proxy `id` overlaps (or touches) the box of proxy `otherId` of `other`. */
+  overlaps(id: number, other: DynamicTree, otherId: number): boolean {
+    const a = this.box;
+    const b = other.box;
+    const i = 4 * id;
+    const j = 4 * otherId;
+    return !(a[i + 2] < b[j] || b[j + 2] < a[i] || a[i + 3] < b[j + 1] || b[j + 3] < a[i + 1]);
+  }
+
   /** Height of the root (0 for a single leaf, -1 when empty). */
   getHeight(): number {
     return this.root === NULL ? -1 : this.height[this.root];

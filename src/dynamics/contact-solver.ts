@@ -1,5 +1,8 @@
 import { growF64, growI32 } from '../core/grow';
+import type { BodyStore } from './body-store';
 import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from './body-store';
+import type { ContactStore } from './contact-store';
+import type { ShapeStore } from './shape-store';
 import type { Softness } from './softness';
 
 // Layout of one contact constraint in `ContactConstraints.data` (doubles).
@@ -15,15 +18,15 @@ const C_COUNT = 8;
 const C_BIAS_RATE = 9;
 const C_MASS_SCALE = 10;
 const C_IMPULSE_SCALE = 11;
-/** 2x2 normal mass matrix K of two-point manifolds and its inverse; C_BLOCK = 1 when K is well conditioned */
+/** 2x2 normal mass matrix K of two-point manifolds; C_BLOCK = 1 when K is well conditioned */
 const C_K11 = 12;
 const C_K12 = 13;
 const C_K22 = 14;
-const C_I11 = 15;
-const C_I12 = 16;
-const C_I22 = 17;
-const C_BLOCK = 18;
-const C_POINTS = 19;
+const C_BLOCK = 15;
+/** compliance (impulseScale / massScale) K11 and K22 of pushing points, for the block solve */
+const C_G1 = 16;
+const C_G2 = 17;
+const C_POINTS = 18;
 /** K's condition number above which the two points are solved one after the other */
 const MAX_CONDITION = 1000;
 // Per point, relative to its base.
@@ -71,128 +74,145 @@ export class ContactConstraints {
 }
 
 /**
- * Writes constraint `i` for a contact. Anchors are taken relative to the centres of mass at the
- * start of the step and stay fixed through the substeps; the separation is updated from the bodies'
- * accumulated motion instead of recomputing the manifold.
+ * Writes one constraint per contact of `order[0..count)`, in that order. Anchors are taken relative
+ * to the centres of mass at the start of the step and stay fixed through the substeps; the separation
+ * is updated from the bodies' accumulated motion instead of recomputing the manifold. Contacts with a
+ * body that contacts cannot move (no mass, no inertia) use `anchoredSoft`, the others `contactSoft`.
  */
-export function prepareContact(
+export function prepareContacts(
   cc: ContactConstraints,
-  i: number,
-  contact: number,
-  bodyA: number,
-  bodyB: number,
-  mA: number,
-  iA: number,
-  mB: number,
-  iB: number,
-  cAx: number,
-  cAy: number,
-  cBx: number,
-  cBy: number,
-  state: Float64Array,
-  nx: number,
-  ny: number,
-  friction: number,
-  restitution: number,
-  radiusA: number,
-  radiusB: number,
-  soft: Softness,
-  pointCount: number,
-  pointX: Float64Array,
-  pointY: Float64Array,
-  separation: Float64Array,
-  normalImpulse: Float64Array,
-  tangentImpulse: Float64Array,
+  order: Int32Array,
+  count: number,
+  contacts: ContactStore,
+  bodies: BodyStore,
+  shapes: ShapeStore,
+  contactSoft: Softness,
+  anchoredSoft: Softness,
 ): void {
+  cc.reserve(count);
   const d = cc.data;
-  const base = i * CONSTRAINT_STRIDE;
-  cc.ids[i * 3] = bodyA;
-  cc.ids[i * 3 + 1] = bodyB;
-  cc.ids[i * 3 + 2] = contact;
-  d[base + C_NX] = nx;
-  d[base + C_NY] = ny;
-  d[base + C_FRICTION] = friction;
-  d[base + C_RESTITUTION] = restitution;
-  d[base + C_MA] = mA;
-  d[base + C_IA] = iA;
-  d[base + C_MB] = mB;
-  d[base + C_IB] = iB;
-  d[base + C_COUNT] = pointCount;
-  d[base + C_BIAS_RATE] = soft.biasRate;
-  d[base + C_MASS_SCALE] = soft.massScale;
-  d[base + C_IMPULSE_SCALE] = soft.impulseScale;
-  const sa = bodyA * STATE_STRIDE;
-  const sb = bodyB * STATE_STRIDE;
-  const vAx = state[sa + S_VX];
-  const vAy = state[sa + S_VY];
-  const wA = state[sa + S_W];
-  const vBx = state[sb + S_VX];
-  const vBy = state[sb + S_VY];
-  const wB = state[sb + S_W];
-  const tx = ny;
-  const ty = -nx;
-  for (let j = 0; j < pointCount; j++) {
-    const k = contact * 2 + j;
-    const p = base + C_POINTS + j * P_STRIDE;
-    const rAx = pointX[k] - cAx;
-    const rAy = pointY[k] - cAy;
-    const rBx = pointX[k] - cBx;
-    const rBy = pointY[k] - cBy;
-    d[p + P_RAX] = rAx;
-    d[p + P_RAY] = rAy;
-    d[p + P_RBX] = rBx;
-    d[p + P_RBY] = rBy;
-    // the surfaces are separation/2 either side of the point; the cores a radius further in
-    const sep = separation[k];
-    const backA = radiusA + 0.5 * sep;
-    const backB = radiusB + 0.5 * sep;
-    const sAx = rAx - backA * nx;
-    const sAy = rAy - backA * ny;
-    const sBx = rBx + backB * nx;
-    const sBy = rBy + backB * ny;
-    d[p + P_SAX] = sAx;
-    d[p + P_SAY] = sAy;
-    d[p + P_SBX] = sBx;
-    d[p + P_SBY] = sBy;
-    d[p + P_ADJ_SEP] = sep - ((sBx - sAx) * nx + (sBy - sAy) * ny);
-    const rnA = rAx * ny - rAy * nx;
-    const rnB = rBx * ny - rBy * nx;
-    const kN = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-    d[p + P_NMASS] = kN > 0 ? 1 / kN : 0;
-    const rtA = rAx * ty - rAy * tx;
-    const rtB = rBx * ty - rBy * tx;
-    const kT = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
-    d[p + P_TMASS] = kT > 0 ? 1 / kT : 0;
-    d[p + P_NIMP] = normalImpulse[k];
-    d[p + P_TIMP] = tangentImpulse[k];
-    d[p + P_MAX_NIMP] = 0;
-    const dvx = vBx - wB * rBy - vAx + wA * rAy;
-    const dvy = vBy + wB * rBx - vAy - wA * rAx;
-    d[p + P_REL_VEL] = dvx * nx + dvy * ny;
-  }
-  d[base + C_BLOCK] = 0;
-  if (pointCount === 2) {
-    const p1 = base + C_POINTS;
-    const p2 = p1 + P_STRIDE;
-    const rn1A = d[p1 + P_RAX] * ny - d[p1 + P_RAY] * nx;
-    const rn1B = d[p1 + P_RBX] * ny - d[p1 + P_RBY] * nx;
-    const rn2A = d[p2 + P_RAX] * ny - d[p2 + P_RAY] * nx;
-    const rn2B = d[p2 + P_RBX] * ny - d[p2 + P_RBY] * nx;
-    const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
-    const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
-    const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-    const det = k11 * k22 - k12 * k12;
-    if (k11 * k11 < MAX_CONDITION * det) {
-      d[base + C_K11] = k11;
-      d[base + C_K12] = k12;
-      d[base + C_K22] = k22;
-      const invDet = 1 / det;
-      d[base + C_I11] = k22 * invDet;
-      d[base + C_I12] = -k12 * invDet;
-      d[base + C_I22] = k11 * invDet;
-      d[base + C_BLOCK] = 1;
+  const pointX = contacts.pointX;
+  const pointY = contacts.pointY;
+  const separation = contacts.separation;
+  const normalImpulse = contacts.normalImpulse;
+  const tangentImpulse = contacts.tangentImpulse;
+  const state = bodies.state;
+  const invMass = bodies.invMass;
+  const invInertia = bodies.invInertia;
+  const cx = bodies.cx;
+  const cy = bodies.cy;
+  const friction = shapes.friction;
+  const restitution = shapes.restitution;
+  const radius = shapes.radius;
+  for (let i = 0; i < count; i++) {
+    const c = order[i];
+    const a = contacts.bodyA[c];
+    const b = contacts.bodyB[c];
+    const sA = contacts.shapeA[c];
+    const sB = contacts.shapeB[c];
+    const mA = invMass[a];
+    const iA = invInertia[a];
+    const mB = invMass[b];
+    const iB = invInertia[b];
+    const soft = (mA === 0 && iA === 0) || (mB === 0 && iB === 0) ? anchoredSoft : contactSoft;
+    const nx = contacts.normalX[c];
+    const ny = contacts.normalY[c];
+    const cAx = cx[a];
+    const cAy = cy[a];
+    const cBx = cx[b];
+    const cBy = cy[b];
+    const radiusA = radius[sA];
+    const radiusB = radius[sB];
+    const pointCount = contacts.pointCount[c];
+    const base = i * CONSTRAINT_STRIDE;
+    cc.ids[i * 3] = a;
+    cc.ids[i * 3 + 1] = b;
+    cc.ids[i * 3 + 2] = c;
+    d[base + C_NX] = nx;
+    d[base + C_NY] = ny;
+    d[base + C_FRICTION] = Math.sqrt(friction[sA] * friction[sB]);
+    d[base + C_RESTITUTION] = Math.max(restitution[sA], restitution[sB]);
+    d[base + C_MA] = mA;
+    d[base + C_IA] = iA;
+    d[base + C_MB] = mB;
+    d[base + C_IB] = iB;
+    d[base + C_COUNT] = pointCount;
+    d[base + C_BIAS_RATE] = soft.biasRate;
+    d[base + C_MASS_SCALE] = soft.massScale;
+    d[base + C_IMPULSE_SCALE] = soft.impulseScale;
+    const sa = a * STATE_STRIDE;
+    const sb = b * STATE_STRIDE;
+    const vAx = state[sa + S_VX];
+    const vAy = state[sa + S_VY];
+    const wA = state[sa + S_W];
+    const vBx = state[sb + S_VX];
+    const vBy = state[sb + S_VY];
+    const wB = state[sb + S_W];
+    const tx = ny;
+    const ty = -nx;
+    for (let j = 0; j < pointCount; j++) {
+      const k = c * 2 + j;
+      const p = base + C_POINTS + j * P_STRIDE;
+      const rAx = pointX[k] - cAx;
+      const rAy = pointY[k] - cAy;
+      const rBx = pointX[k] - cBx;
+      const rBy = pointY[k] - cBy;
+      d[p + P_RAX] = rAx;
+      d[p + P_RAY] = rAy;
+      d[p + P_RBX] = rBx;
+      d[p + P_RBY] = rBy;
+      // the surfaces are separation/2 either side of the point; the cores a radius further in
+      const sep = separation[k];
+      const backA = radiusA + 0.5 * sep;
+      const backB = radiusB + 0.5 * sep;
+      const sAx = rAx - backA * nx;
+      const sAy = rAy - backA * ny;
+      const sBx = rBx + backB * nx;
+      const sBy = rBy + backB * ny;
+      d[p + P_SAX] = sAx;
+      d[p + P_SAY] = sAy;
+      d[p + P_SBX] = sBx;
+      d[p + P_SBY] = sBy;
+      d[p + P_ADJ_SEP] = sep - ((sBx - sAx) * nx + (sBy - sAy) * ny);
+      const rnA = rAx * ny - rAy * nx;
+      const rnB = rBx * ny - rBy * nx;
+      const kN = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+      d[p + P_NMASS] = kN > 0 ? 1 / kN : 0;
+      const rtA = rAx * ty - rAy * tx;
+      const rtB = rBx * ty - rBy * tx;
+      const kT = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
+      d[p + P_TMASS] = kT > 0 ? 1 / kT : 0;
+      d[p + P_NIMP] = normalImpulse[k];
+      d[p + P_TIMP] = tangentImpulse[k];
+      d[p + P_MAX_NIMP] = 0;
+      const dvx = vBx - wB * rBy - vAx + wA * rAy;
+      const dvy = vBy + wB * rBx - vAy - wA * rAx;
+      d[p + P_REL_VEL] = dvx * nx + dvy * ny;
+    }
+    d[base + C_BLOCK] = 0;
+    if (pointCount === 2) {
+      const p1 = base + C_POINTS;
+      const p2 = p1 + P_STRIDE;
+      const rn1A = d[p1 + P_RAX] * ny - d[p1 + P_RAY] * nx;
+      const rn1B = d[p1 + P_RBX] * ny - d[p1 + P_RBY] * nx;
+      const rn2A = d[p2 + P_RAX] * ny - d[p2 + P_RAY] * nx;
+      const rn2B = d[p2 + P_RBX] * ny - d[p2 + P_RBY] * nx;
+      const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+      const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+      const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+      const det = k11 * k22 - k12 * k12;
+      if (k11 * k11 < MAX_CONDITION * det) {
+        d[base + C_K11] = k11;
+        d[base + C_K12] = k12;
+        d[base + C_K22] = k22;
+        d[base + C_BLOCK] = 1;
+        const compliance = soft.impulseScale / soft.massScale;
+        d[base + C_G1] = compliance * k11;
+        d[base + C_G2] = compliance * k22;
+      }
     }
   }
+  cc.count = count;
 }
 
 /** Applies the impulses kept from the previous substep (or step) so the solver starts near the answer. */
@@ -236,59 +256,6 @@ export function warmStartContacts(cc: ContactConstraints, state: Float64Array): 
     state[sb + S_VX] = vBx;
     state[sb + S_VY] = vBy;
     state[sb + S_W] = wB;
-  }
-}
-
-/** Separation of point `p` now, from the bodies' motion since the step began (see P_SAX). */
-function currentSeparation(
-  d: Float64Array,
-  p: number,
-  dpx: number,
-  dpy: number,
-  qAc: number,
-  qAs: number,
-  qBc: number,
-  qBs: number,
-  nx: number,
-  ny: number,
-): number {
-  const sAx = d[p + P_SAX];
-  const sAy = d[p + P_SAY];
-  const sBx = d[p + P_SBX];
-  const sBy = d[p + P_SBY];
-  const ddx = dpx + (qBc * sBx - qBs * sBy) - (qAc * sAx - qAs * sAy);
-  const ddy = dpy + (qBs * sBx + qBc * sBy) - (qAs * sAx + qAc * sAy);
-  return ddx * nx + ddy * ny + d[p + P_ADJ_SEP];
-}
-
-// Per-point scratch of the normal solve: bias, mass scale and impulse scale of the soft constraint.
-let bias1 = 0;
-let mScale1 = 1;
-let iScale1 = 0;
-
-/** Sets bias1/mScale1/iScale1 for a point at separation `s` (speculative, soft or relaxed). */
-function softTerms(
-  s: number,
-  invH: number,
-  useBias: boolean,
-  biasRate: number,
-  massScale: number,
-  impulseScale: number,
-  maxPushSpeed: number,
-): void {
-  if (s > 0) {
-    // speculative: the shapes may approach until they touch, not further
-    bias1 = s * invH;
-    mScale1 = 1;
-    iScale1 = 0;
-  } else if (useBias) {
-    bias1 = Math.max(biasRate * s, -maxPushSpeed);
-    mScale1 = massScale;
-    iScale1 = impulseScale;
-  } else {
-    bias1 = 0;
-    mScale1 = 1;
-    iScale1 = 0;
   }
 }
 
@@ -346,17 +313,35 @@ export function solveContacts(
       const r2Ay = d[p2 + P_RAY];
       const r2Bx = d[p2 + P_RBX];
       const r2By = d[p2 + P_RBY];
-      // current separations from the motion accumulated since the step began
-      const s1 = currentSeparation(d, p1, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
-      const s2 = currentSeparation(d, p2, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny);
-      softTerms(s1, invH, useBias, biasRate, massScale, impulseScale, maxPushSpeed);
-      const b1 = bias1;
-      const ms1 = mScale1;
-      const is1 = iScale1;
-      softTerms(s2, invH, useBias, biasRate, massScale, impulseScale, maxPushSpeed);
-      const b2 = bias1;
-      const ms2 = mScale1;
-      const is2 = iScale1;
+      // current separations from the motion accumulated since the step began (see P_SAX)
+      const s1 =
+        (dpx + (qBc * d[p1 + P_SBX] - qBs * d[p1 + P_SBY]) - (qAc * d[p1 + P_SAX] - qAs * d[p1 + P_SAY])) *
+          nx +
+        (dpy + (qBs * d[p1 + P_SBX] + qBc * d[p1 + P_SBY]) - (qAs * d[p1 + P_SAX] + qAc * d[p1 + P_SAY])) *
+          ny +
+        d[p1 + P_ADJ_SEP];
+      const s2 =
+        (dpx + (qBc * d[p2 + P_SBX] - qBs * d[p2 + P_SBY]) - (qAc * d[p2 + P_SAX] - qAs * d[p2 + P_SAY])) *
+          nx +
+        (dpy + (qBs * d[p2 + P_SBX] + qBc * d[p2 + P_SBY]) - (qAs * d[p2 + P_SAX] + qAc * d[p2 + P_SAY])) *
+          ny +
+        d[p2 + P_ADJ_SEP];
+      // soft terms per point: speculative (s > 0) points may approach until they touch, not further;
+      // pushing points follow the soft constraint with bias, or none in the relax pass
+      let b1 = 0;
+      let g1 = 0;
+      if (s1 > 0) b1 = s1 * invH;
+      else if (useBias) {
+        b1 = Math.max(biasRate * s1, -maxPushSpeed);
+        g1 = d[base + C_G1];
+      }
+      let b2 = 0;
+      let g2 = 0;
+      if (s2 > 0) b2 = s2 * invH;
+      else if (useBias) {
+        b2 = Math.max(biasRate * s2, -maxPushSpeed);
+        g2 = d[base + C_G2];
+      }
       const vn1 = (vBx - wB * r1By - vAx + wA * r1Ay) * nx + (vBy + wB * r1Bx - vAy - wA * r1Ax) * ny;
       const vn2 = (vBx - wB * r2By - vAx + wA * r2Ay) * nx + (vBy + wB * r2Bx - vAy - wA * r2Ax) * ny;
       const l1 = d[p1 + P_NIMP];
@@ -367,8 +352,6 @@ export function solveContacts(
       // Soft block solve: find new impulses x >= 0 with vn' + b + G x = 0 on pushing points, where
       // vn' = vn + K (x - l) and G = diag(is/ms * Kii) is each point's compliance. This is exactly the
       // fixed point of the one-point soft update, so the block and the one-point paths agree.
-      const g1 = (is1 / ms1) * k11;
-      const g2 = (is2 / ms2) * k22;
       const a11 = k11 + g1;
       const a22 = k22 + g2;
       const r1 = -(vn1 + b1) - g1 * l1;
@@ -412,20 +395,24 @@ export function solveContacts(
         const rAy = d[p + P_RAY];
         const rBx = d[p + P_RBX];
         const rBy = d[p + P_RBY];
-        softTerms(
-          currentSeparation(d, p, dpx, dpy, qAc, qAs, qBc, qBs, nx, ny),
-          invH,
-          useBias,
-          biasRate,
-          massScale,
-          impulseScale,
-          maxPushSpeed,
-        );
+        const sep =
+          (dpx + (qBc * d[p + P_SBX] - qBs * d[p + P_SBY]) - (qAc * d[p + P_SAX] - qAs * d[p + P_SAY])) * nx +
+          (dpy + (qBs * d[p + P_SBX] + qBc * d[p + P_SBY]) - (qAs * d[p + P_SAX] + qAc * d[p + P_SAY])) * ny +
+          d[p + P_ADJ_SEP];
+        let bias = 0;
+        let mScale = 1;
+        let iScale = 0;
+        if (sep > 0) bias = sep * invH;
+        else if (useBias) {
+          bias = Math.max(biasRate * sep, -maxPushSpeed);
+          mScale = massScale;
+          iScale = impulseScale;
+        }
         const dvx = vBx - wB * rBy - vAx + wA * rAy;
         const dvy = vBy + wB * rBx - vAy - wA * rAx;
         const vn = dvx * nx + dvy * ny;
         const old = d[p + P_NIMP];
-        let impulse = -d[p + P_NMASS] * mScale1 * (vn + bias1) - iScale1 * old;
+        let impulse = -d[p + P_NMASS] * mScale * (vn + bias) - iScale * old;
         const next = Math.max(old + impulse, 0);
         impulse = next - old;
         d[p + P_NIMP] = next;

@@ -33,6 +33,8 @@ export class ContactStore extends SlotStore {
   /** largest normal impulse of the last step and the approach speed before it (for hit events) */
   maxNormalImpulse = new Float64Array(0);
   approachSpeed = new Float64Array(0);
+  /** edge that separated the pair's cores at the last narrow phase (a speed hint; see manifold-polygon) */
+  separatingAxis = new Uint8Array(0);
 
   protected growColumns(capacity: number): void {
     this.shapeA = growI32(this.shapeA, capacity);
@@ -53,11 +55,13 @@ export class ContactStore extends SlotStore {
     this.tangentImpulse = growF64(this.tangentImpulse, capacity * 2);
     this.maxNormalImpulse = growF64(this.maxNormalImpulse, capacity * 2);
     this.approachSpeed = growF64(this.approachSpeed, capacity * 2);
+    this.separatingAxis = growU8(this.separatingAxis, capacity);
   }
 
   protected resetSlot(slot: number): void {
     this.flags[slot] = 0;
     this.pointCount[slot] = 0;
+    this.separatingAxis[slot] = 0;
     this.normalX[slot] = 0;
     this.normalY[slot] = 0;
     for (let k = slot * 2; k < slot * 2 + 2; k++) {

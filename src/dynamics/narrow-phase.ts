@@ -1,15 +1,25 @@
 import { collide } from '../geometry/manifold';
-import { referenceOwnerOfId, setReferenceHint } from '../geometry/manifold-polygon';
-import { makeManifold } from '../geometry/types';
-import { makeBounds } from '../math/aabb';
+import {
+  lastSeparatingAxis,
+  referenceOwnerOfId,
+  setReferenceHint,
+  setSeparatingAxisHint,
+} from '../geometry/manifold-polygon';
+import type { Manifold, ManifoldPoint } from '../geometry/types';
 import { DYNAMIC, FLAG_AWAKE } from './body-store';
 import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
 import { SHAPE_SENSOR, shouldShapesCollide } from './shape-store';
 import type { WorldCore } from './world-core';
 
-const manifold = makeManifold();
-const fatA = makeBounds();
-const fatB = makeBounds();
+/** A manifold point of its own class, so that its fields stay unboxed doubles (see ScratchPoint). */
+class Point implements ManifoldPoint {
+  x = 0;
+  y = 0;
+  separation = 0;
+  id = 0;
+}
+
+const manifold: Manifold = { normalX: 0, normalY: 0, pointCount: 0, points: [new Point(), new Point()] };
 
 /** Creates contacts for the new overlapping pairs the broad phase found, in (shapeA, shapeB) order. */
 export function createNewContacts(core: WorldCore): void {
@@ -56,9 +66,7 @@ export function updateContacts(core: WorldCore): void {
     if (!awakeA && !awakeB) continue;
     const shapeA = contacts.shapeA[c];
     const shapeB = contacts.shapeB[c];
-    broad.getFatBounds(shapes.proxyKey[shapeA], fatA);
-    broad.getFatBounds(shapes.proxyKey[shapeB], fatB);
-    if (fatA.maxX < fatB.minX || fatB.maxX < fatA.minX || fatA.maxY < fatB.minY || fatB.maxY < fatA.minY) {
+    if (!broad.fatBoxesOverlap(shapes.proxyKey[shapeA], shapes.proxyKey[shapeB])) {
       core.destroyContact(c, true);
       continue;
     }
@@ -66,6 +74,7 @@ export function updateContacts(core: WorldCore): void {
     const sensor = (flags & CONTACT_SENSOR) !== 0;
     const k0 = c * 2;
     setReferenceHint(contacts.pointCount[c] > 0 ? referenceOwnerOfId(contacts.pointId[k0]) : -1);
+    setSeparatingAxisHint(contacts.separatingAxis[c]);
     collide(
       shapes.geometry[shapeA]!,
       core.fillTransform(bodyA, core.xfA),
@@ -75,6 +84,7 @@ export function updateContacts(core: WorldCore): void {
       manifold,
     );
     const count = manifold.pointCount;
+    contacts.separatingAxis[c] = lastSeparatingAxis();
     if (!sensor) {
       // Carry the impulses of surviving points over (warm starting): same feature id, or else the old
       // point nearest to the new one. The position fallback keeps the impulses when the manifold
@@ -112,8 +122,11 @@ export function updateContacts(core: WorldCore): void {
         contacts.normalImpulse[k] = match === 0 ? n0 : match === 1 ? n1 : 0;
         contacts.tangentImpulse[k] = match === 0 ? t0 : match === 1 ? t1 : 0;
       }
-      contacts.normalX[c] = manifold.normalX;
-      contacts.normalY[c] = manifold.normalY;
+      // the normal of a manifold without points is not read (and not always written by collide)
+      if (count > 0) {
+        contacts.normalX[c] = manifold.normalX;
+        contacts.normalY[c] = manifold.normalY;
+      }
     }
     contacts.pointCount[c] = count;
     const touching = count > 0;

@@ -18,7 +18,7 @@ import {
 } from './body-store';
 import {
   applyRestitution,
-  prepareContact,
+  prepareContacts as prepareContactConstraints,
   solveContacts,
   storeImpulses,
   warmStartContacts,
@@ -82,12 +82,10 @@ function prepareJoints(core: WorldCore, h: number): Joint[] {
 function prepareContacts(core: WorldCore, h: number): void {
   const contacts = core.contacts;
   const bodies = core.bodies;
-  const shapes = core.shapes;
   const cc = core.constraints;
   const contactHertz = Math.min(CONTACT_HERTZ, 0.25 / h);
   makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness);
   makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness);
-  cc.reserve(contacts.liveCount);
   const coloring = core.coloring;
   coloring.begin(bodies.capacity, contacts.liveCount);
   for (let c = 0, n = contacts.slotCount; c < n; c++) {
@@ -99,50 +97,16 @@ function prepareContacts(core: WorldCore, h: number): void {
     coloring.add(c, bodies.kind[a] === DYNAMIC ? a : -1, bodies.kind[b] === DYNAMIC ? b : -1);
   }
   const total = coloring.finish();
-  const order = coloring.order;
-  let count = 0;
-  for (let k = 0; k < total; k++) {
-    const c = order[k];
-    const a = contacts.bodyA[c];
-    const b = contacts.bodyB[c];
-    const sA = contacts.shapeA[c];
-    const sB = contacts.shapeB[c];
-    const mA = bodies.invMass[a];
-    const iA = bodies.invInertia[a];
-    const mB = bodies.invMass[b];
-    const iB = bodies.invInertia[b];
-    const anchored = (mA === 0 && iA === 0) || (mB === 0 && iB === 0);
-    prepareContact(
-      cc,
-      count++,
-      c,
-      a,
-      b,
-      mA,
-      iA,
-      mB,
-      iB,
-      bodies.cx[a],
-      bodies.cy[a],
-      bodies.cx[b],
-      bodies.cy[b],
-      bodies.state,
-      contacts.normalX[c],
-      contacts.normalY[c],
-      Math.sqrt(shapes.friction[sA] * shapes.friction[sB]),
-      Math.max(shapes.restitution[sA], shapes.restitution[sB]),
-      shapes.radius[sA],
-      shapes.radius[sB],
-      anchored ? staticSoftness : contactSoftness,
-      contacts.pointCount[c],
-      contacts.pointX,
-      contacts.pointY,
-      contacts.separation,
-      contacts.normalImpulse,
-      contacts.tangentImpulse,
-    );
-  }
-  cc.count = count;
+  prepareContactConstraints(
+    cc,
+    coloring.order,
+    total,
+    contacts,
+    bodies,
+    core.shapes,
+    contactSoftness,
+    staticSoftness,
+  );
 }
 
 /**

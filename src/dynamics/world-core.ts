@@ -8,7 +8,7 @@ import { computeMass } from '../geometry/mass';
 import type { MassData } from '../geometry/types';
 import type { Bounds } from '../math/aabb';
 import { makeBounds } from '../math/aabb';
-import { makeTransform, type Transform } from '../math/vec2';
+import type { Transform } from '../math/vec2';
 import { BodyStore, DYNAMIC, FLAG_AWAKE, FLAG_FIXED_ROTATION, KINEMATIC, STATIC } from './body-store';
 import { ContactConstraints } from './contact-solver';
 import { CONTACT_SENSOR, CONTACT_TOUCHING, ContactStore } from './contact-store';
@@ -18,6 +18,25 @@ import { Islands } from './island';
 import type { Joint } from './joints/joint';
 import type { JointContext } from './joints/joint-context';
 import { SHAPE_SENSOR, ShapeStore } from './shape-store';
+
+/**
+ * Scratch transforms of the step, built from classes of their own: V8 keeps the fields of a class
+ * instance as unboxed doubles, whereas `{ x, y }` literals share their hidden class with every frozen
+ * Vec2 of the geometry, whose fields it stores boxed, so that each write allocated a number.
+ */
+class ScratchPoint {
+  x = 0;
+  y = 0;
+}
+
+class ScratchRot {
+  c = 1;
+  s = 0;
+}
+
+function makeScratchTransform(): Transform {
+  return { p: new ScratchPoint(), q: new ScratchRot() };
+}
 
 const massScratch: MassData = { mass: 0, centerX: 0, centerY: 0, inertia: 0 };
 const boundsScratch: Bounds = makeBounds();
@@ -67,8 +86,8 @@ export class WorldCore {
     invH: 0,
     jointSoftness: { biasRate: 0, massScale: 1, impulseScale: 0 },
   };
-  readonly xfA: Transform = makeTransform();
-  readonly xfB: Transform = makeTransform();
+  readonly xfA: Transform = makeScratchTransform();
+  readonly xfB: Transform = makeScratchTransform();
 
   constructor(lengthUnitsPerMeter: number) {
     this.settings = makeSettings(lengthUnitsPerMeter);

@@ -65,17 +65,50 @@ export function referenceOwnerOfId(id: number): number {
 }
 const VERTEX_PAIR_MIN_GAP = 0.1 * LINEAR_SLOP;
 
-/** Transform of the shape being loaded, relative to A: cos, sin, x, y (set by setIdentity / setRelative). */
-const relative = new Float64Array(4);
+/*
+ * Separating axis memory (speed only, never the result): a pair whose cores were apart by more than
+ * the contact limit along one edge normal usually still is a step later. Testing that edge first
+ * costs one edge instead of the full two-way SAT; when it still separates, the full SAT would find a
+ * separation at least as large and return no points as well. Axis = edge + 1, plus 8 when the edge is
+ * B's; 0 = none.
+ */
+let axisHint = 0;
+let separatingAxis = 0;
+const B_AXIS = 8;
 
-function setIdentity(): void {
-  relative[0] = 1;
-  relative[1] = 0;
-  relative[2] = 0;
-  relative[3] = 0;
+/** Sets the separating axis of the pair's previous collide call (0 = none) and clears the result. */
+export function setSeparatingAxisHint(axis: number): void {
+  axisHint = axis;
+  separatingAxis = 0;
 }
 
-/** B's transform relative to A: q = qA^T qB, p = qA^T (pB - pA). */
+/** The axis that separated the pair in the last collide call (0 when none did, or not a polygon pair). */
+export function lastSeparatingAxis(): number {
+  return separatingAxis;
+}
+
+/** Separations computed by the functions below (a double returned from a call would be boxed). */
+const separationOut = new Float64Array(1);
+
+/** Smallest signed distance of q's vertices to edge `i` of p (as in maxSeparation), to separationOut. */
+function edgeSeparation(p: WorkPolygon, i: number, q: WorkPolygon): void {
+  const nx = p.nx[i];
+  const ny = p.ny[i];
+  const vx = p.x[i];
+  const vy = p.y[i];
+  const qx = q.x;
+  const qy = q.y;
+  let min = Number.POSITIVE_INFINITY;
+  for (let j = 0, n = q.count; j < n; j++) {
+    const d = nx * (qx[j] - vx) + ny * (qy[j] - vy);
+    if (d < min) min = d;
+  }
+  separationOut[0] = min;
+}
+
+/** B's transform relative to A (q = qA^T qB, p = qA^T (pB - pA)): cos, sin, x, y; see setRelative. */
+const relative = new Float64Array(4);
+
 function setRelative(xfA: Transform, xfB: Transform): void {
   const qa = xfA.q;
   const qb = xfB.q;
@@ -87,43 +120,68 @@ function setRelative(xfA: Transform, xfB: Transform): void {
   relative[3] = -qa.s * dx + qa.c * dy;
 }
 
-function loadPolygon(g: Polygon, out: WorkPolygon): void {
+/**
+ * A's polygon as it is (A's frame is its body's frame). `+ 0` turns a -0 coordinate into +0, as the
+ * identity transform of the other loaders does, so both paths give the same bits.
+ */
+function loadPolygonA(g: Polygon): void {
+  const v = g.vertices;
+  const normals = g.normals;
+  const x = polyA.x;
+  const y = polyA.y;
+  const nx = polyA.nx;
+  const ny = polyA.ny;
+  polyA.count = g.count;
+  polyA.radius = g.radius;
+  for (let i = 0, n = g.count; i < n; i++) {
+    const vi = v[i];
+    const ni = normals[i];
+    x[i] = vi.x + 0;
+    y[i] = vi.y + 0;
+    nx[i] = ni.x - 0 * ni.y;
+    ny[i] = 0 * ni.x + ni.y;
+  }
+}
+
+/** B's polygon moved into A's frame by `relative`. */
+function loadPolygonB(g: Polygon): void {
   const relC = relative[0];
   const relS = relative[1];
   const relX = relative[2];
   const relY = relative[3];
   const v = g.vertices;
   const normals = g.normals;
-  out.count = g.count;
-  out.radius = g.radius;
-  for (let i = 0; i < g.count; i++) {
-    out.x[i] = relC * v[i].x - relS * v[i].y + relX;
-    out.y[i] = relS * v[i].x + relC * v[i].y + relY;
-    out.nx[i] = relC * normals[i].x - relS * normals[i].y;
-    out.ny[i] = relS * normals[i].x + relC * normals[i].y;
+  const x = polyB.x;
+  const y = polyB.y;
+  const nx = polyB.nx;
+  const ny = polyB.ny;
+  polyB.count = g.count;
+  polyB.radius = g.radius;
+  for (let i = 0, n = g.count; i < n; i++) {
+    const vi = v[i];
+    const ni = normals[i];
+    const vx = vi.x;
+    const vy = vi.y;
+    const mx = ni.x;
+    const my = ni.y;
+    x[i] = relC * vx - relS * vy + relX;
+    y[i] = relS * vx + relC * vy + relY;
+    nx[i] = relC * mx - relS * my;
+    ny[i] = relS * mx + relC * my;
   }
 }
 
-/** A segment as a 2-vertex polygon: edge 0 runs p1->p2, edge 1 back, with opposite normals. */
-function loadSegment(
-  p1x: number,
-  p1y: number,
-  p2x: number,
-  p2y: number,
-  radius: number,
-  out: WorkPolygon,
-): void {
-  const relC = relative[0];
-  const relS = relative[1];
-  const relX = relative[2];
-  const relY = relative[3];
-  const x1 = relC * p1x - relS * p1y + relX;
-  const y1 = relS * p1x + relC * p1y + relY;
-  const x2 = relC * p2x - relS * p2y + relX;
-  const y2 = relS * p2x + relC * p2y + relY;
+/** A segment (A's own, untransformed) as a 2-vertex polygon: edge 0 runs p1->p2, edge 1 back. */
+function loadSegmentA(p1x: number, p1y: number, p2x: number, p2y: number, radius: number): void {
+  // the identity transform of A's frame, written out so the bits match a transformed load
+  const x1 = p1x - 0 * p1y + 0;
+  const y1 = 0 * p1x + p1y + 0;
+  const x2 = p2x - 0 * p2y + 0;
+  const y2 = 0 * p2x + p2y + 0;
   const ex = x2 - x1;
   const ey = y2 - y1;
   const length = Math.sqrt(ex * ex + ey * ey);
+  const out = polyA;
   out.count = 2;
   out.radius = radius;
   out.x[0] = x1;
@@ -136,20 +194,28 @@ function loadSegment(
   out.ny[1] = ex / length;
 }
 
-let bestEdge = 0;
-
-/** Largest over p's edges of the smallest signed distance of q's vertices to that edge; edge in bestEdge. */
+/**
+ * Largest over p's edges of the smallest signed distance of q's vertices to that edge. Returns the
+ * edge; the separation goes to separationOut.
+ */
 function maxSeparation(p: WorkPolygon, q: WorkPolygon): number {
+  const px = p.x;
+  const py = p.y;
+  const pnx = p.nx;
+  const pny = p.ny;
+  const qx = q.x;
+  const qy = q.y;
+  const qCount = q.count;
   let best = Number.NEGATIVE_INFINITY;
-  bestEdge = 0;
-  for (let i = 0; i < p.count; i++) {
-    const nx = p.nx[i];
-    const ny = p.ny[i];
-    const vx = p.x[i];
-    const vy = p.y[i];
+  let bestEdge = 0;
+  for (let i = 0, n = p.count; i < n; i++) {
+    const nx = pnx[i];
+    const ny = pny[i];
+    const vx = px[i];
+    const vy = py[i];
     let min = Number.POSITIVE_INFINITY;
-    for (let j = 0; j < q.count; j++) {
-      const d = nx * (q.x[j] - vx) + ny * (q.y[j] - vy);
+    for (let j = 0; j < qCount; j++) {
+      const d = nx * (qx[j] - vx) + ny * (qy[j] - vy);
       if (d < min) min = d;
     }
     if (min > best) {
@@ -157,52 +223,56 @@ function maxSeparation(p: WorkPolygon, q: WorkPolygon): number {
       bestEdge = i;
     }
   }
-  return best;
+  separationOut[0] = best;
+  return bestEdge;
 }
 
-/** Writes point `index` from a point on the incident core, given n (reference to incident, A's frame). */
-function writePoint(
-  xfA: Transform,
-  out: Manifold,
-  index: number,
-  x: number,
-  y: number,
-  nx: number,
-  ny: number,
-  coreSeparation: number,
-  referenceRadius: number,
-  incidentRadius: number,
-  id: number,
-): void {
-  // halfway between the reference surface (x - (s - rRef) n) and the incident surface (x - rInc n)
-  const shift = 0.5 * (referenceRadius - incidentRadius - coreSeparation);
-  const mx = x + shift * nx;
-  const my = y + shift * ny;
-  const { c, s } = xfA.q;
-  const point = out.points[index];
-  point.x = c * mx - s * my + xfA.p.x;
-  point.y = s * mx + c * my + xfA.p.y;
-  point.separation = coreSeparation - referenceRadius - incidentRadius;
-  point.id = id;
+/*
+ * The result of collideLoaded in A's frame, turned into the world manifold by writeManifold:
+ * the normal from the reference to the incident shape, and per point the point on the incident core,
+ * its core separation and id.
+ */
+const local = new Float64Array(2 + 3 * 2);
+const L_NX = 0;
+const L_NY = 1;
+const L_POINTS = 2;
+const localIds = new Int32Array(2);
+
+function setLocalPoint(index: number, x: number, y: number, coreSeparation: number, id: number): void {
+  const k = L_POINTS + 3 * index;
+  local[k] = x;
+  local[k + 1] = y;
+  local[k + 2] = coreSeparation;
+  localIds[index] = id;
 }
 
-function setNormal(xfA: Transform, nx: number, ny: number, flip: boolean, out: Manifold): void {
-  const { c, s } = xfA.q;
-  const sign = flip ? -1 : 1;
-  out.normalX = sign * (c * nx - s * ny);
-  out.normalY = sign * (s * nx + c * ny);
-}
-
-/** The manifold of the loaded polyA and polyB. */
-function collideLoaded(xfA: Transform, speculativeDistance: number, out: Manifold): void {
-  out.pointCount = 0;
+/** The manifold of the loaded polyA and polyB in `local`; returns the point count. */
+function collideLoaded(speculativeDistance: number): number {
   const limit = speculativeDistance + polyA.radius + polyB.radius;
-  const separationA = maxSeparation(polyA, polyB);
-  if (separationA >= limit) return;
-  const edgeA = bestEdge;
-  const separationB = maxSeparation(polyB, polyA);
-  if (separationB >= limit) return;
-  const edgeB = bestEdge;
+  if (axisHint !== 0) {
+    const edge = (axisHint - 1) & 7;
+    const ofB = axisHint > B_AXIS;
+    const p = ofB ? polyB : polyA;
+    if (edge < p.count) {
+      edgeSeparation(p, edge, ofB ? polyA : polyB);
+      if (separationOut[0] >= limit) {
+        separatingAxis = axisHint;
+        return 0;
+      }
+    }
+  }
+  const edgeA = maxSeparation(polyA, polyB);
+  const separationA = separationOut[0];
+  if (separationA >= limit) {
+    separatingAxis = edgeA + 1;
+    return 0;
+  }
+  const edgeB = maxSeparation(polyB, polyA);
+  const separationB = separationOut[0];
+  if (separationB >= limit) {
+    separatingAxis = B_AXIS + edgeB + 1;
+    return 0;
+  }
 
   const flip =
     referenceHint === 1
@@ -210,11 +280,14 @@ function collideLoaded(xfA: Transform, speculativeDistance: number, out: Manifol
       : referenceHint === 0
         ? separationB > separationA + STICKY_REFERENCE_TOLERANCE
         : separationB > separationA + REFERENCE_FACE_TOLERANCE;
+  referenceFlip = flip;
   const ref = flip ? polyB : polyA;
   const inc = flip ? polyA : polyB;
   const refEdge = flip ? edgeB : edgeA;
   const separation = flip ? separationB : separationA;
   const owner = flip ? B_REFERENCE_BIT : 0;
+  const rRef = ref.radius;
+  const rInc = inc.radius;
   const nx = ref.nx[refEdge];
   const ny = ref.ny[refEdge];
   const ref2 = refEdge + 1 === ref.count ? 0 : refEdge + 1;
@@ -223,10 +296,12 @@ function collideLoaded(xfA: Transform, speculativeDistance: number, out: Manifol
   const v2x = ref.x[ref2];
   const v2y = ref.y[ref2];
 
+  const incNx = inc.nx;
+  const incNy = inc.ny;
   let inc1 = 0;
   let minDot = Number.POSITIVE_INFINITY;
-  for (let i = 0; i < inc.count; i++) {
-    const d = nx * inc.nx[i] + ny * inc.ny[i];
+  for (let i = 0, n = inc.count; i < n; i++) {
+    const d = nx * incNx[i] + ny * incNy[i];
     if (d < minDot) {
       minDot = d;
       inc1 = i;
@@ -246,14 +321,19 @@ function collideLoaded(xfA: Transform, speculativeDistance: number, out: Manifol
       const distance = Math.sqrt(closest.distanceSq);
       const ux = (closest.qx - closest.px) / distance;
       const uy = (closest.qy - closest.py) / distance;
-      if (!(distance - ref.radius - inc.radius < speculativeDistance)) return;
+      if (!(distance - rRef - rInc < speculativeDistance)) return 0;
       const refVertex = closest.s < 0.5 ? refEdge : ref2;
       const incVertex = closest.t < 0.5 ? inc1 : inc2;
-      setNormal(xfA, ux, uy, flip, out);
-      const id = VERTEX_PAIR_BIT | owner | (refVertex << 4) | incVertex;
-      writePoint(xfA, out, 0, closest.qx, closest.qy, ux, uy, distance, ref.radius, inc.radius, id);
-      out.pointCount = 1;
-      return;
+      local[L_NX] = ux;
+      local[L_NY] = uy;
+      setLocalPoint(
+        0,
+        closest.qx,
+        closest.qy,
+        distance,
+        VERTEX_PAIR_BIT | owner | (refVertex << 4) | incVertex,
+      );
+      return 1;
     }
   }
 
@@ -263,7 +343,8 @@ function collideLoaded(xfA: Transform, speculativeDistance: number, out: Manifol
   const upper = (v2x - v1x) * tx + (v2y - v1y) * ty;
   const a1 = (w1x - v1x) * tx + (w1y - v1y) * ty;
   const a2 = (w2x - v1x) * tx + (w2y - v1y) * ty;
-  setNormal(xfA, nx, ny, flip, out);
+  local[L_NX] = nx;
+  local[L_NY] = ny;
   const idBase = owner | (refEdge << 4);
   if ((a1 < 0 && a2 < 0) || (a1 > upper && a2 > upper)) {
     // the incident edge misses the slab (only in deep or degenerate overlaps): keep its deeper vertex
@@ -271,13 +352,11 @@ function collideLoaded(xfA: Transform, speculativeDistance: number, out: Manifol
     const s2 = (w2x - v1x) * nx + (w2y - v1y) * ny;
     const first = s1 <= s2;
     const s = first ? s1 : s2;
-    if (!(s - ref.radius - inc.radius < speculativeDistance)) return;
-    const x = first ? w1x : w2x;
-    const y = first ? w1y : w2y;
-    writePoint(xfA, out, 0, x, y, nx, ny, s, ref.radius, inc.radius, idBase | (first ? inc1 : inc2));
-    out.pointCount = 1;
-    return;
+    if (!(s - rRef - rInc < speculativeDistance)) return 0;
+    setLocalPoint(0, first ? w1x : w2x, first ? w1y : w2y, s, idBase | (first ? inc1 : inc2));
+    return 1;
   }
+  let count = 0;
   for (let k = 0; k < 2; k++) {
     const ak = k === 0 ? a1 : a2;
     let x = k === 0 ? w1x : w2x;
@@ -289,11 +368,45 @@ function collideLoaded(xfA: Transform, speculativeDistance: number, out: Manifol
       y = w1y + w * (w2y - w1y);
     }
     const s = (x - v1x) * nx + (y - v1y) * ny;
-    if (s - ref.radius - inc.radius < speculativeDistance) {
-      const id = idBase | (k === 0 ? inc1 : inc2);
-      writePoint(xfA, out, out.pointCount, x, y, nx, ny, s, ref.radius, inc.radius, id);
-      out.pointCount += 1;
+    if (s - rRef - rInc < speculativeDistance) {
+      setLocalPoint(count, x, y, s, idBase | (k === 0 ? inc1 : inc2));
+      count++;
     }
+  }
+  return count;
+}
+
+/** Whether the last collideLoaded took its reference face from B. */
+let referenceFlip = false;
+
+/** Writes `count` points of `local` to the world manifold (points halfway between the surfaces). */
+function writeManifold(xfA: Transform, count: number, out: Manifold): void {
+  out.pointCount = count;
+  if (count === 0) return;
+  const c = xfA.q.c;
+  const s = xfA.q.s;
+  const px = xfA.p.x;
+  const py = xfA.p.y;
+  const nx = local[L_NX];
+  const ny = local[L_NY];
+  const flip = referenceFlip;
+  const sign = flip ? -1 : 1;
+  out.normalX = sign * (c * nx - s * ny);
+  out.normalY = sign * (s * nx + c * ny);
+  const rRef = flip ? polyB.radius : polyA.radius;
+  const rInc = flip ? polyA.radius : polyB.radius;
+  for (let i = 0; i < count; i++) {
+    const k = L_POINTS + 3 * i;
+    const coreSeparation = local[k + 2];
+    // halfway between the reference surface (x - (s - rRef) n) and the incident surface (x - rInc n)
+    const shift = 0.5 * (rRef - rInc - coreSeparation);
+    const mx = local[k] + shift * nx;
+    const my = local[k + 1] + shift * ny;
+    const point = out.points[i];
+    point.x = c * mx - s * my + px;
+    point.y = s * mx + c * my + py;
+    point.separation = coreSeparation - rRef - rInc;
+    point.id = localIds[i];
   }
 }
 
@@ -305,11 +418,10 @@ export function collidePolygons(
   speculativeDistance: number,
   out: Manifold,
 ): void {
-  setIdentity();
-  loadPolygon(a, polyA);
+  loadPolygonA(a);
   setRelative(xfA, xfB);
-  loadPolygon(b, polyB);
-  collideLoaded(xfA, speculativeDistance, out);
+  loadPolygonB(b);
+  writeManifold(xfA, collideLoaded(speculativeDistance), out);
 }
 
 export function collideCapsulePolygon(
@@ -320,11 +432,10 @@ export function collideCapsulePolygon(
   speculativeDistance: number,
   out: Manifold,
 ): void {
-  setIdentity();
-  loadSegment(a.center1.x, a.center1.y, a.center2.x, a.center2.y, a.radius, polyA);
+  loadSegmentA(a.center1.x, a.center1.y, a.center2.x, a.center2.y, a.radius);
   setRelative(xfA, xfB);
-  loadPolygon(b, polyB);
-  collideLoaded(xfA, speculativeDistance, out);
+  loadPolygonB(b);
+  writeManifold(xfA, collideLoaded(speculativeDistance), out);
 }
 
 export function collideSegmentPolygon(
@@ -335,9 +446,8 @@ export function collideSegmentPolygon(
   speculativeDistance: number,
   out: Manifold,
 ): void {
-  setIdentity();
-  loadSegment(a.point1.x, a.point1.y, a.point2.x, a.point2.y, 0, polyA);
+  loadSegmentA(a.point1.x, a.point1.y, a.point2.x, a.point2.y, 0);
   setRelative(xfA, xfB);
-  loadPolygon(b, polyB);
-  collideLoaded(xfA, speculativeDistance, out);
+  loadPolygonB(b);
+  writeManifold(xfA, collideLoaded(speculativeDistance), out);
 }
