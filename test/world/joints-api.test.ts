@@ -156,4 +156,35 @@ describe('joint API', () => {
     expect(f.x).toBeCloseTo(0, 6);
     expect(f.y).toBeCloseTo(2 * 10, 3);
   });
+
+  it('setters change motors, limits and springs, validate, and wake the bodies', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const ground = world.createBody();
+    const wheel = world.createBody({ type: 'dynamic' });
+    wheel.createShape(Shape.circle(0.5));
+    const joint = world.createJoint({
+      type: 'revolute',
+      bodyA: ground,
+      bodyB: wheel,
+      anchor: { x: 0, y: 0 },
+    });
+    for (let i = 0; i < 60; i++) world.step(1 / 60);
+    expect(wheel.isAwake).toBe(false);
+    joint.setMaxMotorTorque(100);
+    joint.setMotorSpeed(3);
+    joint.enableMotor(true);
+    expect(wheel.isAwake).toBe(true);
+    for (let i = 0; i < 60; i++) world.step(1 / 60);
+    expect(wheel.angularVelocity).toBeCloseTo(3, 6);
+    const hash = stateHash(world);
+    expect(() => joint.setMotorSpeed(Number.NaN)).toThrow(/speed.*NaN/);
+    expect(() => joint.setLimits(1, -1)).toThrow(/lowerAngle must be <= upperAngle/);
+    expect(() => joint.setSpring(-1, 0)).toThrow(/hertz.*-1/);
+    expect(stateHash(world)).toBe(hash);
+    joint.setLimits(-0.1, 0.1);
+    joint.enableLimit(true);
+    joint.enableMotor(false);
+    for (let i = 0; i < 120; i++) world.step(1 / 60);
+    expect(Math.abs(joint.angle)).toBeLessThan(0.1 + 0.01);
+  });
 });

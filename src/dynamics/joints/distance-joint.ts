@@ -1,3 +1,4 @@
+import { checkBoolean, checkNonNegative, FulcrumError } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
@@ -55,6 +56,36 @@ export class DistanceJoint extends Joint {
 
   get length(): number {
     return this.o.length;
+  }
+
+  setLength(length: number): void {
+    checkNonNegative('length', length);
+    this.changing();
+    this.o.length = length;
+  }
+
+  setLengthRange(minLength: number, maxLength: number): void {
+    checkNonNegative('minLength', minLength);
+    if (maxLength !== Number.POSITIVE_INFINITY) checkNonNegative('maxLength', maxLength);
+    if (minLength > maxLength)
+      throw new FulcrumError(`minLength must be <= maxLength, got ${minLength} > ${maxLength}`);
+    this.changing();
+    this.o.minLength = minLength;
+    this.o.maxLength = maxLength;
+  }
+
+  enableSpring(enable: boolean): void {
+    checkBoolean('enable', enable);
+    this.changing();
+    this.o.enableSpring = enable;
+  }
+
+  setSpring(hertz: number, dampingRatio: number): void {
+    checkNonNegative('hertz', hertz);
+    checkNonNegative('dampingRatio', dampingRatio);
+    this.changing();
+    this.o.hertz = hertz;
+    this.o.dampingRatio = dampingRatio;
   }
 
   getReactionForce(): Vec2 {

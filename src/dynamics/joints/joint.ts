@@ -81,6 +81,14 @@ export abstract class Joint {
     return !this.destroyed;
   }
 
+  /** @internal Validates a setter's call and wakes both bodies so the change takes effect. */
+  protected changing(): void {
+    this.check();
+    if (this.world.core.locked) throw new FulcrumError('the world is locked during step()');
+    this.world.core.wake(this.bodyA.slot);
+    this.world.core.wake(this.bodyB.slot);
+  }
+
   /** Anchor on body A, in world coordinates. */
   get anchorA(): Vec2 {
     this.check();

@@ -1,3 +1,4 @@
+import { checkFinite, checkNonNegative, checkVec2 } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
@@ -40,6 +41,32 @@ export class MotorJoint extends Joint {
   ) {
     super(world, bodyA, bodyB, { x: 0, y: 0 }, { x: 0, y: 0 }, collideConnected, userData);
     this.o = options;
+  }
+
+  /** Wanted position of B's centre in A's frame. */
+  setLinearOffset(offset: Vec2): void {
+    const o = checkVec2('offset', offset);
+    this.changing();
+    this.o.linearOffsetX = o.x;
+    this.o.linearOffsetY = o.y;
+  }
+
+  setAngularOffset(angle: number): void {
+    checkFinite('angle', angle);
+    this.changing();
+    this.o.angularOffset = angle;
+  }
+
+  setMaxForce(force: number): void {
+    checkNonNegative('force', force);
+    this.changing();
+    this.o.maxForce = force;
+  }
+
+  setMaxTorque(torque: number): void {
+    checkNonNegative('torque', torque);
+    this.changing();
+    this.o.maxTorque = torque;
   }
 
   getReactionForce(): Vec2 {

@@ -1,3 +1,4 @@
+import { checkBoolean, checkFinite, checkNonNegative, FulcrumError } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
@@ -63,6 +64,55 @@ export class RevoluteJoint extends Joint {
 
   get motorSpeed(): number {
     return this.o.motorSpeed;
+  }
+
+  enableMotor(enable: boolean): void {
+    checkBoolean('enable', enable);
+    this.changing();
+    this.o.enableMotor = enable;
+  }
+
+  setMotorSpeed(speed: number): void {
+    checkFinite('speed', speed);
+    this.changing();
+    this.o.motorSpeed = speed;
+  }
+
+  setMaxMotorTorque(torque: number): void {
+    checkNonNegative('torque', torque);
+    this.changing();
+    this.o.maxMotorTorque = torque;
+  }
+
+  enableLimit(enable: boolean): void {
+    checkBoolean('enable', enable);
+    this.changing();
+    this.o.enableLimit = enable;
+  }
+
+  setLimits(lowerAngle: number, upperAngle: number): void {
+    checkFinite('lowerAngle', lowerAngle);
+    checkFinite('upperAngle', upperAngle);
+    if (lowerAngle > upperAngle) {
+      throw new FulcrumError(`lowerAngle must be <= upperAngle, got ${lowerAngle} > ${upperAngle}`);
+    }
+    this.changing();
+    this.o.lowerAngle = lowerAngle;
+    this.o.upperAngle = upperAngle;
+  }
+
+  enableSpring(enable: boolean): void {
+    checkBoolean('enable', enable);
+    this.changing();
+    this.o.enableSpring = enable;
+  }
+
+  setSpring(hertz: number, dampingRatio: number): void {
+    checkNonNegative('hertz', hertz);
+    checkNonNegative('dampingRatio', dampingRatio);
+    this.changing();
+    this.o.hertz = hertz;
+    this.o.dampingRatio = dampingRatio;
   }
 
   getReactionForce(): Vec2 {

@@ -1,3 +1,4 @@
+import { checkBoolean, checkFinite, checkNonNegative, FulcrumError } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
@@ -62,6 +63,35 @@ export abstract class SliderJoint extends Joint {
     const b = this.anchorB;
     const axis = this.bodyA.getWorldVector({ x: this.s.localAxisX, y: this.s.localAxisY });
     return (b.x - a.x) * axis.x + (b.y - a.y) * axis.y;
+  }
+
+  enableLimit(enable: boolean): void {
+    checkBoolean('enable', enable);
+    this.changing();
+    this.s.enableLimit = enable;
+  }
+
+  setLimits(lower: number, upper: number): void {
+    checkFinite('lower', lower);
+    checkFinite('upper', upper);
+    if (lower > upper) throw new FulcrumError(`lower must be <= upper, got ${lower} > ${upper}`);
+    this.changing();
+    this.s.lower = lower;
+    this.s.upper = upper;
+  }
+
+  enableSpring(enable: boolean): void {
+    checkBoolean('enable', enable);
+    this.changing();
+    this.s.enableSpring = enable;
+  }
+
+  setSpring(hertz: number, dampingRatio: number): void {
+    checkNonNegative('hertz', hertz);
+    checkNonNegative('dampingRatio', dampingRatio);
+    this.changing();
+    this.s.hertz = hertz;
+    this.s.dampingRatio = dampingRatio;
   }
 
   /** @internal */

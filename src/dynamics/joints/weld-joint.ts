@@ -1,3 +1,4 @@
+import { checkNonNegative } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
@@ -44,6 +45,17 @@ export class WeldJoint extends Joint {
   ) {
     super(world, bodyA, bodyB, localAnchorA, localAnchorB, collideConnected, userData);
     this.o = options;
+  }
+
+  /** 0 makes that part rigid. */
+  setStiffness(linearHertz: number, angularHertz: number, dampingRatio: number): void {
+    checkNonNegative('linearHertz', linearHertz);
+    checkNonNegative('angularHertz', angularHertz);
+    checkNonNegative('dampingRatio', dampingRatio);
+    this.changing();
+    this.o.linearHertz = linearHertz;
+    this.o.angularHertz = angularHertz;
+    this.o.dampingRatio = dampingRatio;
   }
 
   getReactionForce(): Vec2 {

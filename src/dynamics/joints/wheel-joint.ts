@@ -1,3 +1,4 @@
+import { checkBoolean, checkFinite, checkNonNegative } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S_W, STATE_STRIDE } from '../body-store';
@@ -34,6 +35,24 @@ export class WheelJoint extends SliderJoint {
   ) {
     super(world, bodyA, bodyB, localAnchorA, localAnchorB, collideConnected, userData, slider);
     this.o = options;
+  }
+
+  enableMotor(enable: boolean): void {
+    checkBoolean('enable', enable);
+    this.changing();
+    this.o.enableMotor = enable;
+  }
+
+  setMotorSpeed(speed: number): void {
+    checkFinite('speed', speed);
+    this.changing();
+    this.o.motorSpeed = speed;
+  }
+
+  setMaxMotorTorque(torque: number): void {
+    checkNonNegative('torque', torque);
+    this.changing();
+    this.o.maxMotorTorque = torque;
   }
 
   getReactionForce(): Vec2 {
