@@ -59,6 +59,15 @@ export function setReferenceHint(ownerOfPreviousManifold: number): void {
   referenceHint = ownerOfPreviousManifold;
 }
 
+/**
+ * Forgets both hints. `collide` calls it after every pair, so a hint applies to the one call it was
+ * set for and a later caller that sets none (a query, a test) gets the memoryless result.
+ */
+export function clearCollideHints(): void {
+  referenceHint = -1;
+  axisHint = 0;
+}
+
 /** The owner bit of a polygon contact id: 1 when B owned the reference face. */
 export function referenceOwnerOfId(id: number): number {
   return (id & B_REFERENCE_BIT) !== 0 ? 1 : 0;

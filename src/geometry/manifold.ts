@@ -6,7 +6,12 @@ import {
   collideCircleSegment,
   collideCircles,
 } from './manifold-circle';
-import { collideCapsulePolygon, collidePolygons, collideSegmentPolygon } from './manifold-polygon';
+import {
+  clearCollideHints,
+  collideCapsulePolygon,
+  collidePolygons,
+  collideSegmentPolygon,
+} from './manifold-polygon';
 import type { Geometry, Manifold } from './types';
 
 export { collideCapsuleSegment, collideCapsules } from './manifold-capsule';
@@ -95,4 +100,5 @@ export function collide(
   } else {
     PAIRS[pair](a, xfA, b, xfB, speculativeDistance, out);
   }
+  clearCollideHints();
 }
