@@ -75,6 +75,7 @@ function prepareJoints(core: WorldCore, h: number): Joint[] {
     joint.prepare(ctx);
     active.push(joint);
   }
+  core.jointTree.build(active, bodies.kind, bodies.invMass, bodies.invInertia);
   return active;
 }
 
@@ -120,6 +121,8 @@ export function solve(core: WorldCore, dt: number): void {
   const joints = prepareJoints(core, h);
   const jointCount = joints.length;
   const ctx = core.jointContext;
+  const tree = core.jointTree;
+  const treeBias = ctx.jointSoftness.biasRate;
   prepareContacts(core, h);
   const bodies = core.bodies;
   const state = bodies.state;
@@ -131,11 +134,17 @@ export function solve(core: WorldCore, dt: number): void {
     integrateVelocities(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, settings.maxLinearSpeed);
     for (let j = 0; j < jointCount; j++) joints[j].warmStart(ctx);
     warmStartContacts(cc, state);
+    tree.factor(ctx);
+    tree.project(state, treeBias);
     for (let j = 0; j < jointCount; j++) joints[j].solve(ctx, true);
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
+    tree.project(state, treeBias);
     integratePositions(state, awake, awakeCount, h);
+    tree.factor(ctx);
+    tree.project(state, 0);
     for (let j = 0; j < jointCount; j++) joints[j].solve(ctx, false);
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
+    tree.project(state, 0);
   }
   applyRestitution(cc, state, settings.restitutionThreshold);
   const contacts = core.contacts;

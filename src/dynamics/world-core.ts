@@ -17,6 +17,7 @@ import { GraphColoring } from './graph-color';
 import { Islands } from './island';
 import type { Joint } from './joints/joint';
 import type { JointContext } from './joints/joint-context';
+import { JointTree } from './joints/joint-tree';
 import { SHAPE_SENSOR, ShapeStore } from './shape-store';
 
 /**
@@ -72,6 +73,8 @@ export class WorldCore {
   readonly bodyJoints: (Joint[] | undefined)[] = [];
   /** joints solved in the current step and what they read */
   readonly activeJoints: Joint[] = [];
+  /** the exact solver of the active joints that form a forest */
+  readonly jointTree = new JointTree();
   readonly jointContext: JointContext = {
     state: new Float64Array(0),
     invMass: new Float64Array(0),
@@ -85,6 +88,7 @@ export class WorldCore {
     h: 0,
     invH: 0,
     jointSoftness: { biasRate: 0, massScale: 1, impulseScale: 0 },
+    tree: this.jointTree,
   };
   readonly xfA: Transform = makeScratchTransform();
   readonly xfB: Transform = makeScratchTransform();

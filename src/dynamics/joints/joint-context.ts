@@ -1,4 +1,5 @@
 import type { Softness } from '../softness';
+import type { JointTree } from './joint-tree';
 
 /** What every joint needs from the step: the body columns and the substep's constants. */
 export interface JointContext {
@@ -17,4 +18,6 @@ export interface JointContext {
   invH: number;
   /** softness of rigid joints' position correction */
   jointSoftness: Softness;
+  /** the exact solver of tree-shaped joints (closures apply their impulses through it) */
+  tree: JointTree;
 }

@@ -51,6 +51,14 @@ export abstract class Joint {
   protected sepX = 0;
   protected sepY = 0;
   protected invH = 0;
+  /** @internal set each step: the rigid rows of this joint are solved by the JointTree */
+  inTree = false;
+  /** @internal set each step: this hinge closes a loop of the tree; its point rows use closureMass */
+  closure = false;
+  /** @internal this joint's index among the tree's closures, when `closure` */
+  closureIndex = -1;
+  /** @internal effective mass matrix (2 × 2) of the point rows through the tree, when `closure` */
+  readonly closureMass = new Float64Array(4);
 
   constructor(
     world: World,
@@ -151,6 +159,53 @@ export abstract class Joint {
     this.rBy = s * this.rBx0 + c * this.rBy0;
     this.sepX = state[sb + S_DPX] - state[sa + S_DPX] + this.dcx + this.rBx - this.rAx;
     this.sepY = state[sb + S_DPY] - state[sa + S_DPY] + this.dcy + this.rBy - this.rAy;
+  }
+
+  /** @internal angular mass of the joint's limit and motor row through the tree (0 = its own) */
+  treeAxialMass = 0;
+
+  /** @internal Whether the joint has an angular limit or motor row that the tree should weigh. */
+  hasAxialRow(): boolean {
+    return false;
+  }
+
+  /** @internal Number of rigid rows this joint can give the direct tree solver (0 = none). */
+  treeRows(): number {
+    return 0;
+  }
+
+  /**
+   * @internal Updates the anchors and writes the tree rows of joint `j` of the tree: the Jacobian
+   * blocks of A and B (rows × 3 at 9j, stride 3) and the position errors (at 3j).
+   */
+  treeFill(
+    _state: Float64Array,
+    _jA: Float64Array,
+    _jB: Float64Array,
+    _err: Float64Array,
+    _j: number,
+  ): void {}
+
+  /** @internal Adds the tree solver's impulse on the tree rows. */
+  treeAddImpulse(_x: number, _y: number, _z: number): void {}
+
+  /** Writes the two point rows (anchor B minus anchor A) of tree joint `j`; anchors must be current. */
+  protected fillPointRows(jA: Float64Array, jB: Float64Array, err: Float64Array, j: number): void {
+    const m = 9 * j;
+    jA[m] = -1;
+    jA[m + 1] = 0;
+    jA[m + 2] = this.rAy;
+    jA[m + 3] = 0;
+    jA[m + 4] = -1;
+    jA[m + 5] = -this.rAx;
+    jB[m] = 1;
+    jB[m + 1] = 0;
+    jB[m + 2] = -this.rBy;
+    jB[m + 3] = 0;
+    jB[m + 4] = 1;
+    jB[m + 5] = this.rBx;
+    err[3 * j] = this.sepX;
+    err[3 * j + 1] = this.sepY;
   }
 
   /** @internal */

@@ -8,6 +8,9 @@ import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 import { relativeAngle, solve22, solved } from './joint-math';
 
+/** share of a closing hinge's own inverse mass added to its inverse mass through the tree */
+const CLOSURE_REGULARIZATION = 0.05;
+
 export interface RevoluteOptions {
   referenceAngle: number;
   enableLimit: boolean;
@@ -126,6 +129,34 @@ export class RevoluteJoint extends Joint {
   }
 
   /** @internal */
+  override hasAxialRow(): boolean {
+    return this.o.enableLimit || this.o.enableMotor;
+  }
+
+  /** @internal the point rows */
+  override treeRows(): number {
+    return 2;
+  }
+
+  /** @internal */
+  override treeFill(
+    state: Float64Array,
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+  ): void {
+    this.updateAnchors(state);
+    this.fillPointRows(jA, jB, err, j);
+  }
+
+  /** @internal */
+  override treeAddImpulse(x: number, y: number): void {
+    this.linearX += x;
+    this.linearY += y;
+  }
+
+  /** @internal */
   prepare(ctx: JointContext): void {
     this.prepareBase(ctx);
     const k = this.iA + this.iB;
@@ -191,10 +222,12 @@ export class RevoluteJoint extends Joint {
       wA -= iA * impulse;
       wB += iB * impulse;
     }
+    // limit and motor turn the bodies about the hinge: through the tree, their angular mass
+    const axialMass = this.treeAxialMass > 0 ? this.treeAxialMass : this.axialMass;
     if (o.enableMotor && !fixedRotation) {
       const max = o.maxMotorTorque * ctx.h;
       const old = this.motorImpulse;
-      this.motorImpulse = Math.max(-max, Math.min(old - this.axialMass * (wB - wA - o.motorSpeed), max));
+      this.motorImpulse = Math.max(-max, Math.min(old - axialMass * (wB - wA - o.motorSpeed), max));
       const impulse = this.motorImpulse - old;
       wA -= iA * impulse;
       wB += iB * impulse;
@@ -215,7 +248,7 @@ export class RevoluteJoint extends Joint {
           impulseScale = soft.impulseScale;
         }
         const old = this.lowerImpulse;
-        const next = Math.max(old - massScale * this.axialMass * (wB - wA + bias) - impulseScale * old, 0);
+        const next = Math.max(old - massScale * axialMass * (wB - wA + bias) - impulseScale * old, 0);
         this.lowerImpulse = next;
         wA -= iA * (next - old);
         wB += iB * (next - old);
@@ -233,14 +266,19 @@ export class RevoluteJoint extends Joint {
           impulseScale = soft.impulseScale;
         }
         const old = this.upperImpulse;
-        const next = Math.max(old - massScale * this.axialMass * (wA - wB + bias) - impulseScale * old, 0);
+        const next = Math.max(old - massScale * axialMass * (wA - wB + bias) - impulseScale * old, 0);
         this.upperImpulse = next;
         wA += iA * (next - old);
         wB -= iB * (next - old);
       }
     }
 
-    // point-to-point
+    // point-to-point, unless the tree solver owns it
+    if (this.inTree) {
+      state[sa + S_W] = wA;
+      state[sb + S_W] = wB;
+      return;
+    }
     this.updateAnchors(state);
     const rAx = this.rAx;
     const rAy = this.rAy;
@@ -263,14 +301,28 @@ export class RevoluteJoint extends Joint {
       massScale = soft.massScale;
       impulseScale = soft.impulseScale;
     }
-    const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
-    const k12 = -rAy * rAx * iA - rBy * rBx * iB;
-    const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+    let k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+    let k12 = -rAy * rAx * iA - rBy * rBx * iB;
+    let k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+    if (this.closure) {
+      // through the tree, plus a little of the local mass: the tree may not let the hinge move at all
+      // in some direction (two pinned bars), where K alone would be singular
+      const k = this.closureMass;
+      k11 = k[0] + CLOSURE_REGULARIZATION * k11;
+      k12 = k[1] + CLOSURE_REGULARIZATION * k12;
+      k22 = k[3] + CLOSURE_REGULARIZATION * k22;
+    }
     solve22(k11, k12, k22, cdotX + biasX, cdotY + biasY);
     const px = -massScale * solved.x - impulseScale * this.linearX;
     const py = -massScale * solved.y - impulseScale * this.linearY;
     this.linearX += px;
     this.linearY += py;
+    if (this.closure) {
+      state[sa + S_W] = wA;
+      state[sb + S_W] = wB;
+      ctx.tree.applyClosure(this.closureIndex, px, py, state);
+      return;
+    }
     vAx -= mA * px;
     vAy -= mA * py;
     wA -= iA * (rAx * py - rAy * px);

@@ -68,6 +68,41 @@ export class WeldJoint extends Joint {
     return this.angularImpulse * this.invH;
   }
 
+  /** @internal a rigid weld's point and angle rows */
+  override treeRows(): number {
+    return this.o.linearHertz === 0 && this.o.angularHertz === 0 ? 3 : 0;
+  }
+
+  /** @internal */
+  override treeFill(
+    state: Float64Array,
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+  ): void {
+    this.updateAnchors(state);
+    this.fillPointRows(jA, jB, err, j);
+    const m = 9 * j + 6;
+    jA[m] = 0;
+    jA[m + 1] = 0;
+    jA[m + 2] = -1;
+    jB[m] = 0;
+    jB[m + 1] = 0;
+    jB[m + 2] = 1;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    err[3 * j + 2] =
+      this.angle0 + relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+  }
+
+  /** @internal */
+  override treeAddImpulse(x: number, y: number, z: number): void {
+    this.linearX += x;
+    this.linearY += y;
+    this.angularImpulse += z;
+  }
+
   /** @internal */
   prepare(ctx: JointContext): void {
     this.prepareBase(ctx);
@@ -101,6 +136,7 @@ export class WeldJoint extends Joint {
 
   /** @internal */
   solve(ctx: JointContext, useBias: boolean): void {
+    if (this.inTree) return;
     const state = ctx.state;
     const sa = this.a * STATE_STRIDE;
     const sb = this.b * STATE_STRIDE;

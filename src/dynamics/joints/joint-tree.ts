@@ -1,0 +1,724 @@
+import { growF64, growI32, growU8 } from '../../core/grow';
+import { DYNAMIC, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import type { Joint } from './joint';
+import type { JointContext } from './joint-context';
+
+/*
+ * Direct solver for the rigid rows of joints that form a forest (chains, bridges, welded beams,
+ * ragdolls, vehicles), after D. Baraff, "Linear-Time Dynamics using Lagrange Multipliers",
+ * SIGGRAPH 1996.
+ *
+ * Gauss-Seidel over soft joints stretches under load: each joint's stiffness follows the mass of its
+ * own two bodies, so a 100 kg ball on a chain of 1 kg links, or the root of a cantilever, gives
+ * centimetres or metres of error. Here the equality rows of tree-shaped joints are solved exactly:
+ * the system
+ *
+ *     [ M  Jᵀ ] [ Δv ]   [ 0             ]
+ *     [ J  0  ] [ μ  ] = [ -(J v + bias) ]      (impulse λ = -μ)
+ *
+ * is laid out as a tree whose nodes are the dynamic bodies (3 rows) and the joints between two of
+ * them (1-3 rows), ordered children before parents and factored as L D Lᵀ with no fill-in, in time
+ * linear in the number of joints. A joint to a static or kinematic body would be a leaf with a zero
+ * pivot, so its rows join its dynamic body's node instead (one such joint per body; that node's
+ * pivot block is then [M J; J 0], which is still invertible without pivoting).
+ *
+ * Joints that would close a loop, a second grounded joint on one body, and joints on bodies with
+ * fixed rotation stay with the iterative solver. The choice is greedy in creation order.
+ */
+
+/**
+ * Loop-closing hinges that are solved through the tree (each costs two solves per factorization and
+ * a pass over the tree per iteration), and the largest tree size for which that is done.
+ */
+const MAX_CLOSURES = 8;
+const MAX_CLOSURE_NODES = 1024;
+/**
+ * Clusters of jointed bodies with more independent loops than this (grids, cloth) stay iterative as a
+ * whole: a spanning tree of a grid is a long snake, and the many hinges left out of it, solved
+ * iteratively against it, converge far worse than plain Gauss-Seidel over all of them.
+ */
+const MAX_LOOPS = 8;
+
+/** tree hinges whose limit or motor row gets its effective mass through the tree (one solve each) */
+const MAX_AXIALS = 16;
+
+/** rows and columns of a node block: a body's 3 plus up to 3 rows of a grounded joint */
+const S = 6;
+const SS = S * S;
+const BODY = 0;
+
+export class JointTree {
+  /** the joints solved here this step, in creation order */
+  readonly joints: Joint[] = [];
+  jointCount = 0;
+  /** per tree joint: rows, Jacobian blocks (rows × 3, stride 3) for A and B, position errors */
+  private rows = new Int32Array(16);
+  private jA = new Float64Array(16 * 9);
+  private jB = new Float64Array(16 * 9);
+  private err = new Float64Array(16 * 3);
+  /**
+   * Hinges that would close a loop (a bridge pinned at both ends) stay iterative, but are solved
+   * through the tree: with the effective mass K = J P M⁻¹ Jᵀ (P the projection onto the tree rows)
+   * and with their impulse applied as the tree's response to it. Without this the one hinge that
+   * closes the loop carries the load with the stiffness of its own two bodies.
+   */
+  readonly closures: Joint[] = [];
+  private closureNodeA = new Int32Array(MAX_CLOSURES);
+  private closureNodeB = new Int32Array(MAX_CLOSURES);
+  private closureJA = new Float64Array(MAX_CLOSURES * 9);
+  private closureJB = new Float64Array(MAX_CLOSURES * 9);
+  private closureErr = new Float64Array(MAX_CLOSURES * 3);
+  /** per closure row: the velocity change of every body node for a unit impulse on that row */
+  private response = new Float64Array(0);
+  /**
+   * Tree hinges with a limit or a motor: their angular row is solved iteratively, after the tree's
+   * projection, so it needs the angular mass the tree gives it (an arm on a pin turns about the pin,
+   * not about its centre of mass).
+   */
+  readonly axials: Joint[] = [];
+  private axialNodeA = new Int32Array(MAX_AXIALS);
+  private axialNodeB = new Int32Array(MAX_AXIALS);
+  /** per tree joint: the node holding its rows, the first of them there, and its bodies' nodes */
+  private rowNode = new Int32Array(16);
+  private rowOffset = new Int32Array(16);
+  private nodeOfA = new Int32Array(16);
+  private nodeOfB = new Int32Array(16);
+
+  /** per node: joint index + 1 for joint nodes or BODY, dimension, body slot, merged joint, parent */
+  private nodeKind = new Int32Array(32);
+  private nodeDim = new Int32Array(32);
+  private nodeBody = new Int32Array(32);
+  private nodeGround = new Int32Array(32);
+  private parent = new Int32Array(32);
+  /** per node, S × S blocks: H to the parent, pivot D, its inverse, L = D⁻¹ H to the parent */
+  private hp = new Float64Array(32 * SS);
+  private d = new Float64Array(32 * SS);
+  private dInv = new Float64Array(32 * SS);
+  private l = new Float64Array(32 * SS);
+  private x = new Float64Array(32 * S);
+  /** nodes, children before parents */
+  private order = new Int32Array(32);
+  private nodeCount = 0;
+
+  /** per body slot: union-find parent and its node */
+  private root = new Int32Array(64);
+  /** per body slot: cluster union-find (not through the ground); at a root, its loops and ground */
+  private cluster = new Int32Array(64);
+  private loops = new Int32Array(64);
+  private clusterGrounded = new Uint8Array(64);
+  private counted = new Uint8Array(64);
+  private bodyNode = new Int32Array(64);
+  /** adjacency of the forest as linked lists of edges */
+  private adjHead = new Int32Array(32);
+  private adjNext = new Int32Array(64);
+  private adjTo = new Int32Array(64);
+  private visited = new Uint8Array(32);
+
+  /**
+   * Chooses the tree joints among `active` (all prepared) and orders the nodes. Joints chosen get
+   * `inTree = true`, the others false.
+   */
+  build(active: readonly Joint[], kind: Uint8Array, invMass: Float64Array, invInertia: Float64Array): void {
+    if (this.root.length < kind.length) {
+      this.root = growI32(this.root, kind.length);
+      this.cluster = growI32(this.cluster, kind.length);
+      this.loops = growI32(this.loops, kind.length);
+      this.clusterGrounded = growU8(this.clusterGrounded, kind.length);
+      this.counted = growU8(this.counted, kind.length);
+      this.bodyNode = growI32(this.bodyNode, kind.length);
+    }
+    this.joints.length = 0;
+    this.closures.length = 0;
+    this.axials.length = 0;
+    // the ground's entry: a non-dynamic body of the active joints
+    let ground = -1;
+    for (let j = 0; j < active.length && ground === -1; j++) {
+      const joint = active[j];
+      if (kind[joint.bodyA.slot] !== DYNAMIC) ground = joint.bodyA.slot;
+      else if (kind[joint.bodyB.slot] !== DYNAMIC) ground = joint.bodyB.slot;
+    }
+    for (let j = 0; j < active.length; j++) {
+      const joint = active[j];
+      joint.inTree = false;
+      joint.closure = false;
+      joint.treeAxialMass = 0;
+      this.touch(joint.bodyA.slot);
+      this.touch(joint.bodyB.slot);
+    }
+    this.countLoops(active, kind, invMass, invInertia);
+    for (let j = 0; j < active.length; j++) {
+      const joint = active[j];
+      if (!eligible(joint, kind, invMass, invInertia)) continue;
+      const a = joint.bodyA.slot;
+      const b = joint.bodyB.slot;
+      const dynA = kind[a] === DYNAMIC;
+      const dynB = kind[b] === DYNAMIC;
+      if (this.loops[this.findCluster(dynA ? a : b)] > MAX_LOOPS) continue;
+      // every non-dynamic body counts as one node, the ground, so loops through it are refused too:
+      // a bar pinned at both ends is redundant, and its system singular
+      const ra = this.find(dynA ? a : ground);
+      const rb = this.find(dynB ? b : ground);
+      if (ra === rb) {
+        if (joint.treeRows() === 2 && this.closures.length < MAX_CLOSURES) {
+          joint.closure = true;
+          this.closures.push(joint);
+        }
+        continue;
+      }
+      this.root[ra] = rb;
+      joint.inTree = true;
+      this.joints.push(joint);
+      if (joint.hasAxialRow() && this.axials.length < MAX_AXIALS) this.axials.push(joint);
+    }
+    this.jointCount = this.joints.length;
+    this.buildNodes(kind);
+    for (let i = 0; i < this.axials.length; i++) {
+      this.axialNodeA[i] = this.bodyNode[this.axials[i].bodyA.slot];
+      this.axialNodeB[i] = this.bodyNode[this.axials[i].bodyB.slot];
+    }
+    if (this.nodeCount > MAX_CLOSURE_NODES) {
+      for (let c = 0; c < this.closures.length; c++) this.closures[c].closure = false;
+      this.closures.length = 0;
+    }
+    for (let c = 0; c < this.closures.length; c++) {
+      this.closures[c].closureIndex = c;
+      this.closureNodeA[c] = this.bodyNode[this.closures[c].bodyA.slot];
+      this.closureNodeB[c] = this.bodyNode[this.closures[c].bodyB.slot];
+    }
+    for (let j = 0; j < active.length; j++) {
+      this.bodyNode[active[j].bodyA.slot] = -1;
+      this.bodyNode[active[j].bodyB.slot] = -1;
+    }
+  }
+
+  /**
+   * Groups the bodies of eligible joints into clusters (not joined through the ground) and stores, at
+   * each cluster's root, its number of independent loops: joints - bodies + 1, or joints - bodies
+   * when the cluster is held by a non-dynamic body.
+   */
+  private countLoops(
+    active: readonly Joint[],
+    kind: Uint8Array,
+    invMass: Float64Array,
+    invInertia: Float64Array,
+  ): void {
+    const loops = this.loops;
+    for (let j = 0; j < active.length; j++) {
+      const joint = active[j];
+      if (!eligible(joint, kind, invMass, invInertia)) continue;
+      const a = joint.bodyA.slot;
+      const b = joint.bodyB.slot;
+      if (kind[a] === DYNAMIC && kind[b] === DYNAMIC) {
+        const ra = this.findCluster(a);
+        const rb = this.findCluster(b);
+        if (ra !== rb) this.cluster[ra] = rb;
+      }
+    }
+    for (let j = 0; j < active.length; j++) {
+      const joint = active[j];
+      if (!eligible(joint, kind, invMass, invInertia)) continue;
+      const a = joint.bodyA.slot;
+      const b = joint.bodyB.slot;
+      const r = this.findCluster(kind[a] === DYNAMIC ? a : b);
+      loops[r]++;
+      if (kind[a] !== DYNAMIC || kind[b] !== DYNAMIC) this.clusterGrounded[r] = 1;
+      for (let side = 0; side < 2; side++) {
+        const body = side === 0 ? a : b;
+        if (kind[body] !== DYNAMIC || this.counted[body] !== 0) continue;
+        this.counted[body] = 1;
+        loops[r]--;
+      }
+    }
+    for (let j = 0; j < active.length; j++) {
+      const joint = active[j];
+      const a = joint.bodyA.slot;
+      const b = joint.bodyB.slot;
+      for (let side = 0; side < 2; side++) {
+        const body = side === 0 ? a : b;
+        if (this.cluster[body] !== body || this.counted[body] === 2) continue;
+        this.counted[body] = 2;
+        if (this.clusterGrounded[body] === 0) loops[body]++;
+      }
+    }
+  }
+
+  private findCluster(b: number): number {
+    const cluster = this.cluster;
+    let r = b;
+    while (cluster[r] !== r) r = cluster[r];
+    while (cluster[b] !== r) {
+      const next = cluster[b];
+      cluster[b] = r;
+      b = next;
+    }
+    return r;
+  }
+
+  private touch(b: number): void {
+    this.cluster[b] = b;
+    this.loops[b] = 0;
+    this.clusterGrounded[b] = 0;
+    this.counted[b] = 0;
+    this.root[b] = b;
+    this.bodyNode[b] = -1;
+  }
+
+  private find(b: number): number {
+    const root = this.root;
+    let r = b;
+    while (root[r] !== r) r = root[r];
+    while (root[b] !== r) {
+      const next = root[b];
+      root[b] = r;
+      b = next;
+    }
+    return r;
+  }
+
+  private ensureCapacity(count: number): void {
+    if (this.rows.length < count) {
+      const cap = Math.max(2 * this.rows.length, count);
+      this.rows = growI32(this.rows, cap);
+      this.rowNode = growI32(this.rowNode, cap);
+      this.rowOffset = growI32(this.rowOffset, cap);
+      this.nodeOfA = growI32(this.nodeOfA, cap);
+      this.nodeOfB = growI32(this.nodeOfB, cap);
+      this.jA = growF64(this.jA, cap * 9);
+      this.jB = growF64(this.jB, cap * 9);
+      this.err = growF64(this.err, cap * 3);
+    }
+    const n = 3 * count + 1;
+    if (this.nodeKind.length >= n) return;
+    const cap = Math.max(2 * this.nodeKind.length, n);
+    this.nodeKind = growI32(this.nodeKind, cap);
+    this.nodeDim = growI32(this.nodeDim, cap);
+    this.nodeBody = growI32(this.nodeBody, cap);
+    this.nodeGround = growI32(this.nodeGround, cap);
+    this.parent = growI32(this.parent, cap);
+    this.order = growI32(this.order, cap);
+    this.adjHead = growI32(this.adjHead, cap);
+    this.adjNext = growI32(this.adjNext, 2 * cap);
+    this.adjTo = growI32(this.adjTo, 2 * cap);
+    this.visited = growU8(this.visited, cap);
+    this.hp = growF64(this.hp, cap * SS);
+    this.d = growF64(this.d, cap * SS);
+    this.dInv = growF64(this.dInv, cap * SS);
+    this.l = growF64(this.l, cap * SS);
+    this.x = growF64(this.x, cap * S);
+  }
+
+  private addEdge(edge: number, from: number, to: number): void {
+    this.adjTo[edge] = to;
+    this.adjNext[edge] = this.adjHead[from];
+    this.adjHead[from] = edge;
+  }
+
+  /** The node of dynamic body `b`, made on first use. */
+  private nodeFor(b: number, nodes: number): number {
+    const node = this.bodyNode[b];
+    if (node !== -1) return node;
+    this.bodyNode[b] = nodes;
+    this.nodeKind[nodes] = BODY;
+    this.nodeDim[nodes] = 3;
+    this.nodeBody[nodes] = b;
+    this.nodeGround[nodes] = -1;
+    this.adjHead[nodes] = -1;
+    return nodes;
+  }
+
+  /** Makes the nodes of the tree joints and their bodies, links them and orders each tree. */
+  private buildNodes(kind: Uint8Array): void {
+    const count = this.jointCount;
+    this.ensureCapacity(count);
+    let nodes = 0;
+    let edges = 0;
+    for (let j = 0; j < count; j++) {
+      const joint = this.joints[j];
+      const rows = joint.treeRows();
+      this.rows[j] = rows;
+      const a = joint.bodyA.slot;
+      const b = joint.bodyB.slot;
+      let nodeA = -1;
+      let nodeB = -1;
+      if (kind[a] === DYNAMIC) {
+        nodeA = this.nodeFor(a, nodes);
+        if (nodeA === nodes) nodes++;
+      }
+      if (kind[b] === DYNAMIC) {
+        nodeB = this.nodeFor(b, nodes);
+        if (nodeB === nodes) nodes++;
+      }
+      this.nodeOfA[j] = nodeA;
+      this.nodeOfB[j] = nodeB;
+      if (nodeA === -1 || nodeB === -1) {
+        // grounded: the rows join the body's node after its 3 velocity rows
+        const node = nodeA === -1 ? nodeB : nodeA;
+        this.nodeGround[node] = j;
+        this.nodeDim[node] = 3 + rows;
+        this.rowNode[j] = node;
+        this.rowOffset[j] = 3;
+        continue;
+      }
+      const c = nodes++;
+      this.nodeKind[c] = j + 1;
+      this.nodeDim[c] = rows;
+      this.nodeGround[c] = -1;
+      this.adjHead[c] = -1;
+      this.rowNode[j] = c;
+      this.rowOffset[j] = 0;
+      this.addEdge(edges++, c, nodeA);
+      this.addEdge(edges++, nodeA, c);
+      this.addEdge(edges++, c, nodeB);
+      this.addEdge(edges++, nodeB, c);
+    }
+    this.nodeCount = nodes;
+    // A breadth-first walk lists parents before children; reversed, it is the elimination order. A
+    // tree is rooted at its grounded body if it has one: below any other root, the pivot of the joint
+    // above that body would be singular, as the ground already fixes what the joint constrains.
+    const visited = this.visited;
+    visited.fill(0, 0, nodes);
+    const order = this.order;
+    let listed = 0;
+    for (let k = 0; k < 2 * nodes; k++) {
+      const r = k < nodes ? k : k - nodes;
+      if (visited[r] !== 0 || (k < nodes && this.nodeGround[r] === -1)) continue;
+      visited[r] = 1;
+      this.parent[r] = -1;
+      const start = listed;
+      order[listed++] = r;
+      for (let q = start; q < listed; q++) {
+        const n = order[q];
+        for (let e = this.adjHead[n]; e !== -1; e = this.adjNext[e]) {
+          const m = this.adjTo[e];
+          if (visited[m] !== 0) continue;
+          visited[m] = 1;
+          this.parent[m] = n;
+          order[listed++] = m;
+        }
+      }
+    }
+    for (let i = 0, k = listed - 1; i < k; i++, k--) {
+      const t = order[i];
+      order[i] = order[k];
+      order[k] = t;
+    }
+  }
+
+  /**
+   * Takes the tree rows' Jacobians and errors at the bodies' current positions, factors them and
+   * updates the closures' effective masses.
+   */
+  factor(ctx: JointContext): void {
+    this.factorTree(ctx);
+    if (this.closures.length > 0) this.closureMasses(ctx);
+    if (this.axials.length > 0) this.axialMasses();
+  }
+
+  /** The angular mass of each axial row through the tree: response to a unit torque pair. */
+  private axialMasses(): void {
+    const x = this.x;
+    for (let i = 0; i < this.axials.length; i++) {
+      const nodeA = this.axialNodeA[i];
+      const nodeB = this.axialNodeB[i];
+      x.fill(0, 0, S * this.nodeCount);
+      if (nodeA !== -1) x[S * nodeA + 2] = -1;
+      if (nodeB !== -1) x[S * nodeB + 2] = 1;
+      this.substitute();
+      let k = 0;
+      if (nodeA !== -1) k -= x[S * nodeA + 2];
+      if (nodeB !== -1) k += x[S * nodeB + 2];
+      this.axials[i].treeAxialMass = k > 0 ? 1 / k : 0;
+    }
+  }
+
+  private factorTree(ctx: JointContext): void {
+    const count = this.jointCount;
+    if (count === 0) return;
+    const state = ctx.state;
+    for (let j = 0; j < count; j++) this.joints[j].treeFill(state, this.jA, this.jB, this.err, j);
+    this.fillBlocks(ctx.invMass, ctx.invInertia);
+    const nodes = this.nodeCount;
+    const order = this.order;
+    const d = this.d;
+    const hp = this.hp;
+    const dInv = this.dInv;
+    const l = this.l;
+    for (let q = 0; q < nodes; q++) {
+      const n = order[q];
+      const o = SS * n;
+      const dim = this.nodeDim[n];
+      invertBlock(d, dInv, o, dim);
+      const p = this.parent[n];
+      if (p === -1) continue;
+      const dimP = this.nodeDim[p];
+      const op = SS * p;
+      // L = D⁻¹ H (dim × dimP), then D_p -= Hᵀ L
+      for (let r = 0; r < dim; r++) {
+        for (let c = 0; c < dimP; c++) {
+          let s = 0;
+          for (let k = 0; k < dim; k++) s += dInv[o + S * r + k] * hp[o + S * k + c];
+          l[o + S * r + c] = s;
+        }
+      }
+      for (let r = 0; r < dimP; r++) {
+        for (let c = 0; c < dimP; c++) {
+          let s = 0;
+          for (let k = 0; k < dim; k++) s += hp[o + S * k + r] * l[o + S * k + c];
+          d[op + S * r + c] -= s;
+        }
+      }
+    }
+  }
+
+  /**
+   * Gives each closure its effective mass through the tree: for each of its rows, the tree's velocity
+   * response to that row's impulse, read back through both rows.
+   */
+  private closureMasses(ctx: JointContext): void {
+    const state = ctx.state;
+    const jA = this.closureJA;
+    const jB = this.closureJB;
+    const x = this.x;
+    if (this.response.length === 0)
+      this.response = new Float64Array(2 * MAX_CLOSURES * 3 * MAX_CLOSURE_NODES);
+    const response = this.response;
+    for (let c = 0; c < this.closures.length; c++) {
+      const joint = this.closures[c];
+      joint.treeFill(state, jA, jB, this.closureErr, c);
+      const nodeA = this.closureNodeA[c];
+      const nodeB = this.closureNodeB[c];
+      const k = joint.closureMass;
+      k.fill(0);
+      for (let r = 0; r < 2; r++) {
+        x.fill(0, 0, S * this.nodeCount);
+        const m = 9 * c + 3 * r;
+        for (let i = 0; i < 3; i++) {
+          if (nodeA !== -1) x[S * nodeA + i] += jA[m + i];
+          if (nodeB !== -1) x[S * nodeB + i] += jB[m + i];
+        }
+        if (this.jointCount > 0) this.substitute();
+        const base = (2 * c + r) * 3 * MAX_CLOSURE_NODES;
+        for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
+          const o = base + 3 * n;
+          const nodeIsBody = this.nodeKind[n] === BODY;
+          response[o] = nodeIsBody ? x[S * n] : 0;
+          response[o + 1] = nodeIsBody ? x[S * n + 1] : 0;
+          response[o + 2] = nodeIsBody ? x[S * n + 2] : 0;
+        }
+        // K's column r: both rows read the response at the hinge's two bodies (the ground has none)
+        for (let side = 0; side < 2; side++) {
+          const node = side === 0 ? nodeA : nodeB;
+          if (node === -1) continue;
+          const jac = side === 0 ? jA : jB;
+          const o = base + 3 * node;
+          for (let row = 0; row < 2; row++) {
+            const q = 9 * c + 3 * row;
+            k[2 * row + r] +=
+              jac[q] * response[o] + jac[q + 1] * response[o + 1] + jac[q + 2] * response[o + 2];
+          }
+        }
+      }
+    }
+  }
+
+  /** Applies impulse (px, py) on the point rows of closure `c` as the tree's response to it. */
+  applyClosure(c: number, px: number, py: number, state: Float64Array): void {
+    const response = this.response;
+    const bx = 2 * c * 3 * MAX_CLOSURE_NODES;
+    const by = bx + 3 * MAX_CLOSURE_NODES;
+    for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
+      if (this.nodeKind[n] !== BODY) continue;
+      const s = this.nodeBody[n] * STATE_STRIDE;
+      const ox = bx + 3 * n;
+      const oy = by + 3 * n;
+      state[s + S_VX] += px * response[ox] + py * response[oy];
+      state[s + S_VY] += px * response[ox + 1] + py * response[oy + 1];
+      state[s + S_W] += px * response[ox + 2] + py * response[oy + 2];
+    }
+  }
+
+  /** Sets each node's pivot to its block of H (mass and grounded rows) and its block to the parent. */
+  private fillBlocks(invMass: Float64Array, invInertia: Float64Array): void {
+    const d = this.d;
+    const hp = this.hp;
+    for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
+      const o = SS * n;
+      d.fill(0, o, o + SS);
+      hp.fill(0, o, o + SS);
+      if (this.nodeKind[n] === BODY) {
+        const b = this.nodeBody[n];
+        const m = 1 / invMass[b];
+        d[o] = m;
+        d[o + S + 1] = m;
+        d[o + 2 * S + 2] = 1 / invInertia[b];
+        const g = this.nodeGround[n];
+        if (g !== -1) {
+          const block = this.nodeOfA[g] === n ? this.jA : this.jB;
+          for (let r = 0, rows = this.rows[g]; r < rows; r++) {
+            for (let c = 0; c < 3; c++) {
+              const v = block[9 * g + 3 * r + c];
+              d[o + S * (3 + r) + c] = v;
+              d[o + S * c + 3 + r] = v;
+            }
+          }
+        }
+      }
+      const p = this.parent[n];
+      if (p === -1) continue;
+      // between a joint node and one of its bodies, H is that body's Jacobian block (transposed when
+      // the body is the child); it only touches the body's velocity rows
+      const jointNode = this.nodeKind[n] === BODY ? p : n;
+      const bodyNode = jointNode === n ? p : n;
+      const j = this.nodeKind[jointNode] - 1;
+      const block = this.nodeOfA[j] === bodyNode ? this.jA : this.jB;
+      for (let r = 0, rows = this.rows[j]; r < rows; r++) {
+        for (let c = 0; c < 3; c++) {
+          const v = block[9 * j + 3 * r + c];
+          if (jointNode === n) hp[o + S * r + c] = v;
+          else hp[o + S * c + r] = v;
+        }
+      }
+    }
+  }
+
+  /**
+   * Projects the velocities onto the tree rows with the last factorization: afterwards J v = 0, or
+   * with `biasRate` > 0, J v = -biasRate C (the position error shrinks at that rate).
+   */
+  project(state: Float64Array, biasRate: number): void {
+    const count = this.jointCount;
+    if (count === 0) return;
+    const x = this.x;
+    x.fill(0, 0, S * this.nodeCount);
+    // right-hand side: -(J v + bias) on the joints' rows, 0 on the bodies'
+    const jA = this.jA;
+    const jB = this.jB;
+    const err = this.err;
+    for (let j = 0; j < count; j++) {
+      const joint = this.joints[j];
+      const sa = joint.bodyA.slot * STATE_STRIDE;
+      const sb = joint.bodyB.slot * STATE_STRIDE;
+      const vAx = state[sa + S_VX];
+      const vAy = state[sa + S_VY];
+      const wA = state[sa + S_W];
+      const vBx = state[sb + S_VX];
+      const vBy = state[sb + S_VY];
+      const wB = state[sb + S_W];
+      const o = S * this.rowNode[j] + this.rowOffset[j];
+      for (let r = 0, rows = this.rows[j]; r < rows; r++) {
+        const m = 9 * j + 3 * r;
+        const cdot =
+          jA[m] * vAx + jA[m + 1] * vAy + jA[m + 2] * wA + jB[m] * vBx + jB[m + 1] * vBy + jB[m + 2] * wB;
+        x[o + r] = -(cdot + biasRate * err[3 * j + r]);
+      }
+    }
+    this.substitute();
+    for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
+      if (this.nodeKind[n] !== BODY) continue;
+      const o = S * n;
+      const s = this.nodeBody[n] * STATE_STRIDE;
+      state[s + S_VX] += x[o];
+      state[s + S_VY] += x[o + 1];
+      state[s + S_W] += x[o + 2];
+    }
+    for (let j = 0; j < count; j++) {
+      const o = S * this.rowNode[j] + this.rowOffset[j];
+      this.joints[j].treeAddImpulse(-x[o], -x[o + 1], -x[o + 2]);
+    }
+  }
+
+  /** Solves L D Lᵀ x = x in place. */
+  private substitute(): void {
+    const nodes = this.nodeCount;
+    const order = this.order;
+    const x = this.x;
+    const l = this.l;
+    const dInv = this.dInv;
+    // forward: x_p -= Lᵀ x_n, children first
+    for (let q = 0; q < nodes; q++) {
+      const n = order[q];
+      const p = this.parent[n];
+      if (p === -1) continue;
+      const dim = this.nodeDim[n];
+      const o = SS * n;
+      for (let c = 0, dimP = this.nodeDim[p]; c < dimP; c++) {
+        let s = 0;
+        for (let k = 0; k < dim; k++) s += l[o + S * k + c] * x[S * n + k];
+        x[S * p + c] -= s;
+      }
+    }
+    // diagonal: x = D⁻¹ x (the scratch tail of x holds the node's unscaled values meanwhile)
+    for (let n = 0; n < nodes; n++) {
+      const o = SS * n;
+      const dim = this.nodeDim[n];
+      const xo = S * n;
+      for (let k = 0; k < dim; k++) scratch[k] = x[xo + k];
+      for (let r = 0; r < dim; r++) {
+        let s = 0;
+        for (let k = 0; k < dim; k++) s += dInv[o + S * r + k] * scratch[k];
+        x[xo + r] = s;
+      }
+    }
+    // backward: x_n -= L x_p, parents first
+    for (let q = nodes - 1; q >= 0; q--) {
+      const n = order[q];
+      const p = this.parent[n];
+      if (p === -1) continue;
+      const o = SS * n;
+      const dimP = this.nodeDim[p];
+      for (let r = 0, dim = this.nodeDim[n]; r < dim; r++) {
+        let s = 0;
+        for (let c = 0; c < dimP; c++) s += l[o + S * r + c] * x[S * p + c];
+        x[S * n + r] -= s;
+      }
+    }
+  }
+}
+
+/** Whether the joint has rows for the tree and bodies the tree can take (dynamic ones must turn). */
+function eligible(joint: Joint, kind: Uint8Array, invMass: Float64Array, invInertia: Float64Array): boolean {
+  if (joint.treeRows() === 0) return false;
+  const a = joint.bodyA.slot;
+  const b = joint.bodyB.slot;
+  const dynA = kind[a] === DYNAMIC;
+  const dynB = kind[b] === DYNAMIC;
+  if (!dynA && !dynB) return false;
+  if (dynA && (invInertia[a] === 0 || invMass[a] === 0)) return false;
+  if (dynB && (invInertia[b] === 0 || invMass[b] === 0)) return false;
+  return true;
+}
+
+const scratch = new Float64Array(S);
+const work = new Float64Array(SS);
+
+/**
+ * Inverts the symmetric dim × dim block at `o` (stride S) of `m` into `out` by Gauss-Jordan
+ * elimination in natural order. No pivoting is needed here: a block is either positive definite (a
+ * body), negative definite (a joint) or a body's positive definite rows followed by its grounded
+ * joint's rows, whose Schur complement is negative definite. A zero pivot gives a zero row.
+ */
+function invertBlock(m: Float64Array, out: Float64Array, o: number, dim: number): void {
+  for (let r = 0; r < dim; r++) {
+    for (let c = 0; c < dim; c++) {
+      work[S * r + c] = m[o + S * r + c];
+      out[o + S * r + c] = r === c ? 1 : 0;
+    }
+  }
+  for (let k = 0; k < dim; k++) {
+    const pivot = work[S * k + k];
+    const inv = pivot !== 0 ? 1 / pivot : 0;
+    for (let c = 0; c < dim; c++) {
+      work[S * k + c] *= inv;
+      out[o + S * k + c] *= inv;
+    }
+    for (let r = 0; r < dim; r++) {
+      if (r === k) continue;
+      const f = work[S * r + k];
+      if (f === 0) continue;
+      for (let c = 0; c < dim; c++) {
+        work[S * r + c] -= f * work[S * k + c];
+        out[o + S * r + c] -= f * out[o + S * k + c];
+      }
+    }
+  }
+}
