@@ -73,11 +73,15 @@ export class ContactConstraints {
   }
 }
 
+/** mass ratio from which a contact between two moving bodies is as stiff as one with the ground */
+const HEAVY_RATIO = 4;
+
 /**
  * Writes one constraint per contact of `order[0..count)`, in that order. Anchors are taken relative
  * to the centres of mass at the start of the step and stay fixed through the substeps; the separation
  * is updated from the bodies' accumulated motion instead of recomputing the manifold. Contacts with a
- * body that contacts cannot move (no mass, no inertia) use `anchoredSoft`, the others `contactSoft`.
+ * body that contacts cannot move (no mass, no inertia), or between bodies of very different mass,
+ * use `anchoredSoft`, the others `contactSoft`.
  */
 export function prepareContacts(
   cc: ContactConstraints,
@@ -114,7 +118,11 @@ export function prepareContacts(
     const iA = invInertia[a];
     const mB = invMass[b];
     const iB = invInertia[b];
-    const soft = (mA === 0 && iA === 0) || (mB === 0 && iB === 0) ? anchoredSoft : contactSoft;
+    // A body four or more times heavier than the other holds it like the ground does: the soft contact's
+    // stiffness follows the light body's mass, and under the heavy one's weight it would sink.
+    const anchored =
+      (mA === 0 && iA === 0) || (mB === 0 && iB === 0) || mA >= HEAVY_RATIO * mB || mB >= HEAVY_RATIO * mA;
+    const soft = anchored ? anchoredSoft : contactSoft;
     const nx = contacts.normalX[c];
     const ny = contacts.normalY[c];
     const cAx = cx[a];
