@@ -68,6 +68,8 @@ export class JointTree {
   private closureJA = new Float64Array(MAX_CLOSURES * 9);
   private closureJB = new Float64Array(MAX_CLOSURES * 9);
   private closureErr = new Float64Array(MAX_CLOSURES * 3);
+  /** the impulse a closure hands to applyClosure (doubles passed to a call would be boxed) */
+  readonly closureImpulse = new Float64Array(2);
   /** per closure row: the velocity change of every body node for a unit impulse on that row */
   private response = new Float64Array(0);
   /**
@@ -521,8 +523,10 @@ export class JointTree {
     }
   }
 
-  /** Applies impulse (px, py) on the point rows of closure `c` as the tree's response to it. */
-  applyClosure(c: number, px: number, py: number, state: Float64Array): void {
+  /** Applies `closureImpulse` on the point rows of closure `c` as the tree's response to it. */
+  applyClosure(c: number, state: Float64Array): void {
+    const px = this.closureImpulse[0];
+    const py = this.closureImpulse[1];
     const response = this.response;
     const bx = 2 * c * 3 * MAX_CLOSURE_NODES;
     const by = bx + 3 * MAX_CLOSURE_NODES;
@@ -623,7 +627,7 @@ export class JointTree {
     }
     for (let j = 0; j < count; j++) {
       const o = S * this.rowNode[j] + this.rowOffset[j];
-      this.joints[j].treeAddImpulse(-x[o], -x[o + 1], -x[o + 2]);
+      this.joints[j].treeAddImpulse(x, o);
     }
   }
 

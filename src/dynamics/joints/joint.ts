@@ -186,8 +186,11 @@ export abstract class Joint {
     _j: number,
   ): void {}
 
-  /** @internal Adds the tree solver's impulse on the tree rows. */
-  treeAddImpulse(_x: number, _y: number, _z: number): void {}
+  /**
+   * @internal Adds the tree solver's impulse on the tree rows: minus `solution[o..]` (the rows'
+   * multipliers; an array and an index, as doubles passed to a call would be boxed).
+   */
+  treeAddImpulse(_solution: Float64Array, _o: number): void {}
 
   /** Writes the two point rows (anchor B minus anchor A) of tree joint `j`; anchors must be current. */
   protected fillPointRows(jA: Float64Array, jB: Float64Array, err: Float64Array, j: number): void {

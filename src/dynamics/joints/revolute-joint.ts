@@ -151,9 +151,9 @@ export class RevoluteJoint extends Joint {
   }
 
   /** @internal */
-  override treeAddImpulse(x: number, y: number): void {
-    this.linearX += x;
-    this.linearY += y;
+  override treeAddImpulse(solution: Float64Array, o: number): void {
+    this.linearX -= solution[o];
+    this.linearY -= solution[o + 1];
   }
 
   /** @internal */
@@ -161,8 +161,10 @@ export class RevoluteJoint extends Joint {
     this.prepareBase(ctx);
     const k = this.iA + this.iB;
     this.axialMass = k > 0 ? 1 / k : 0;
-    this.angle0 =
-      relativeAngle(ctx.qc[this.a], ctx.qs[this.a], ctx.qc[this.b], ctx.qs[this.b]) - this.o.referenceAngle;
+    // only limits and springs read the angle (computing it boxes a double per joint and step)
+    if (this.o.enableLimit || this.o.enableSpring)
+      this.angle0 =
+        relativeAngle(ctx.qc[this.a], ctx.qs[this.a], ctx.qc[this.b], ctx.qs[this.b]) - this.o.referenceAngle;
     makeSoftness(this.o.enableSpring ? this.o.hertz : 0, this.o.dampingRatio, ctx.h, this.spring);
     if (!this.o.enableSpring) this.springImpulse = 0;
     if (!this.o.enableMotor) this.motorImpulse = 0;
@@ -320,7 +322,10 @@ export class RevoluteJoint extends Joint {
     if (this.closure) {
       state[sa + S_W] = wA;
       state[sb + S_W] = wB;
-      ctx.tree.applyClosure(this.closureIndex, px, py, state);
+      const impulse = ctx.tree.closureImpulse;
+      impulse[0] = px;
+      impulse[1] = py;
+      ctx.tree.applyClosure(this.closureIndex, state);
       return;
     }
     vAx -= mA * px;

@@ -97,10 +97,10 @@ export class WeldJoint extends Joint {
   }
 
   /** @internal */
-  override treeAddImpulse(x: number, y: number, z: number): void {
-    this.linearX += x;
-    this.linearY += y;
-    this.angularImpulse += z;
+  override treeAddImpulse(solution: Float64Array, o: number): void {
+    this.linearX -= solution[o];
+    this.linearY -= solution[o + 1];
+    this.angularImpulse -= solution[o + 2];
   }
 
   /** @internal */
