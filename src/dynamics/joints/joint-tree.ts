@@ -696,12 +696,20 @@ const scratch = new Float64Array(S);
 const work = new Float64Array(SS);
 
 /**
- * Inverts the symmetric dim × dim block at `o` (stride S) of `m` into `out` by Gauss-Jordan
- * elimination in natural order. No pivoting is needed here: a block is either positive definite (a
+ * Inverts the symmetric dim × dim block at `o` (stride S) of `m` into `out`: in closed form up to
+ * 3 rows, else by Gauss-Jordan elimination in natural order. No pivoting is needed here: a block is either positive definite (a
  * body), negative definite (a joint) or a body's positive definite rows followed by its grounded
  * joint's rows, whose Schur complement is negative definite. A zero pivot gives a zero row.
  */
 function invertBlock(m: Float64Array, out: Float64Array, o: number, dim: number): void {
+  if (dim === 2) {
+    invert2(m, out, o);
+    return;
+  }
+  if (dim === 3) {
+    invert3(m, out, o);
+    return;
+  }
   for (let r = 0; r < dim; r++) {
     for (let c = 0; c < dim; c++) {
       work[S * r + c] = m[o + S * r + c];
@@ -725,4 +733,44 @@ function invertBlock(m: Float64Array, out: Float64Array, o: number, dim: number)
       }
     }
   }
+}
+
+/** Closed-form inverse of a symmetric 2 × 2 block (the rows of a hinge). */
+function invert2(m: Float64Array, out: Float64Array, o: number): void {
+  const a = m[o];
+  const b = m[o + 1];
+  const c = m[o + S + 1];
+  let det = a * c - b * b;
+  if (det !== 0) det = 1 / det;
+  out[o] = det * c;
+  out[o + 1] = -det * b;
+  out[o + S] = -det * b;
+  out[o + S + 1] = det * a;
+}
+
+/** Closed-form inverse of a symmetric 3 × 3 block (a body, or the rows of a weld), by cofactors. */
+function invert3(m: Float64Array, out: Float64Array, o: number): void {
+  const a11 = m[o];
+  const a12 = m[o + 1];
+  const a13 = m[o + 2];
+  const a22 = m[o + S + 1];
+  const a23 = m[o + S + 2];
+  const a33 = m[o + 2 * S + 2];
+  const c11 = a22 * a33 - a23 * a23;
+  const c12 = a13 * a23 - a12 * a33;
+  const c13 = a12 * a23 - a13 * a22;
+  let det = a11 * c11 + a12 * c12 + a13 * c13;
+  if (det !== 0) det = 1 / det;
+  const i12 = det * c12;
+  const i13 = det * c13;
+  const i23 = det * (a12 * a13 - a11 * a23);
+  out[o] = det * c11;
+  out[o + 1] = i12;
+  out[o + 2] = i13;
+  out[o + S] = i12;
+  out[o + S + 1] = det * (a11 * a33 - a13 * a13);
+  out[o + S + 2] = i23;
+  out[o + 2 * S] = i13;
+  out[o + 2 * S + 1] = i23;
+  out[o + 2 * S + 2] = det * (a11 * a22 - a12 * a12);
 }
