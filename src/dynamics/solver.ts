@@ -123,6 +123,8 @@ export function solve(core: WorldCore, dt: number): void {
   const ctx = core.jointContext;
   const tree = core.jointTree;
   const treeBias = ctx.jointSoftness.biasRate;
+  const iterative = tree.iterative;
+  const iterativeCount = iterative.length;
   prepareContacts(core, h);
   const bodies = core.bodies;
   const state = bodies.state;
@@ -134,15 +136,16 @@ export function solve(core: WorldCore, dt: number): void {
     integrateVelocities(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, settings.maxLinearSpeed);
     for (let j = 0; j < jointCount; j++) joints[j].warmStart(ctx);
     warmStartContacts(cc, state);
-    tree.factor(ctx);
+    // positions change only in integratePositions: the last substep's relax factorization still holds
+    if (i === 0) tree.factor(ctx);
     tree.project(state, treeBias);
-    for (let j = 0; j < jointCount; j++) joints[j].solve(ctx, true);
+    for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, true);
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
     tree.project(state, treeBias);
     integratePositions(state, awake, awakeCount, h);
     tree.factor(ctx);
     tree.project(state, 0);
-    for (let j = 0; j < jointCount; j++) joints[j].solve(ctx, false);
+    for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, false);
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
     tree.project(state, 0);
   }

@@ -51,6 +51,11 @@ export class JointTree {
   /** the joints solved here this step, in creation order */
   readonly joints: Joint[] = [];
   jointCount = 0;
+  /** the active joints with rows for the iterative solver (not in the tree, or with axial rows) */
+  readonly iterative: Joint[] = [];
+  /** per tree joint: its bodies' slots */
+  private slotA = new Int32Array(16);
+  private slotB = new Int32Array(16);
   /** per tree joint: rows, Jacobian blocks (rows × 3, stride 3) for A and B, position errors */
   private rows = new Int32Array(16);
   private jA = new Float64Array(16 * 9);
@@ -92,14 +97,14 @@ export class JointTree {
   private nodeBody = new Int32Array(32);
   private nodeGround = new Int32Array(32);
   private parent = new Int32Array(32);
-  /** per node, S × S blocks: H to the parent, pivot D, its inverse, L = D⁻¹ H to the parent */
-  private hp = new Float64Array(32 * SS);
+  /** per node: pivot D and its inverse (S × S), and L = D⁻¹ H to the parent (3 × 3, see factorTree) */
   private d = new Float64Array(32 * SS);
   private dInv = new Float64Array(32 * SS);
-  private l = new Float64Array(32 * SS);
+  private l = new Float64Array(32 * 9);
   private x = new Float64Array(32 * S);
-  /** nodes, children before parents */
+  /** scratch of buildNodes: the breadth-first order, then each old node's new index */
   private order = new Int32Array(32);
+  private rank = new Int32Array(32);
   private nodeCount = 0;
 
   /** per body slot: union-find parent and its node */
@@ -173,6 +178,11 @@ export class JointTree {
       if (joint.hasAxialRow() && this.axials.length < MAX_AXIALS) this.axials.push(joint);
     }
     this.jointCount = this.joints.length;
+    this.iterative.length = 0;
+    for (let j = 0; j < active.length; j++) {
+      const joint = active[j];
+      if (!joint.inTree || joint.iteratesInTree()) this.iterative.push(joint);
+    }
     this.buildNodes(kind);
     for (let i = 0; i < this.axials.length; i++) {
       this.axialNodeA[i] = this.bodyNode[this.axials[i].bodyA.slot];
@@ -281,6 +291,8 @@ export class JointTree {
     if (this.rows.length < count) {
       const cap = Math.max(2 * this.rows.length, count);
       this.rows = growI32(this.rows, cap);
+      this.slotA = growI32(this.slotA, cap);
+      this.slotB = growI32(this.slotB, cap);
       this.rowNode = growI32(this.rowNode, cap);
       this.rowOffset = growI32(this.rowOffset, cap);
       this.nodeOfA = growI32(this.nodeOfA, cap);
@@ -298,14 +310,14 @@ export class JointTree {
     this.nodeGround = growI32(this.nodeGround, cap);
     this.parent = growI32(this.parent, cap);
     this.order = growI32(this.order, cap);
+    this.rank = growI32(this.rank, cap);
     this.adjHead = growI32(this.adjHead, cap);
     this.adjNext = growI32(this.adjNext, 2 * cap);
     this.adjTo = growI32(this.adjTo, 2 * cap);
     this.visited = growU8(this.visited, cap);
-    this.hp = growF64(this.hp, cap * SS);
     this.d = growF64(this.d, cap * SS);
     this.dInv = growF64(this.dInv, cap * SS);
-    this.l = growF64(this.l, cap * SS);
+    this.l = growF64(this.l, cap * 9);
     this.x = growF64(this.x, cap * S);
   }
 
@@ -340,6 +352,8 @@ export class JointTree {
       this.rows[j] = rows;
       const a = joint.bodyA.slot;
       const b = joint.bodyB.slot;
+      this.slotA[j] = a;
+      this.slotB[j] = b;
       let nodeA = -1;
       let nodeB = -1;
       if (kind[a] === DYNAMIC) {
@@ -399,11 +413,31 @@ export class JointTree {
         }
       }
     }
-    for (let i = 0, k = listed - 1; i < k; i++, k--) {
-      const t = order[i];
-      order[i] = order[k];
-      order[k] = t;
+    this.renumber(listed);
+  }
+
+  /**
+   * Renumbers the nodes in elimination order, the reverse of the breadth-first `order`, so that the
+   * factorization and the substitutions run over the node arrays front to back (children first).
+   */
+  private renumber(nodes: number): void {
+    const order = this.order;
+    const rank = this.rank;
+    for (let q = 0; q < nodes; q++) rank[order[q]] = nodes - 1 - q;
+    const tmp = this.adjHead;
+    permute(this.nodeKind, rank, tmp, nodes);
+    permute(this.nodeDim, rank, tmp, nodes);
+    permute(this.nodeBody, rank, tmp, nodes);
+    permute(this.nodeGround, rank, tmp, nodes);
+    permute(this.parent, rank, tmp, nodes);
+    const parent = this.parent;
+    for (let n = 0; n < nodes; n++) if (parent[n] !== -1) parent[n] = rank[parent[n]];
+    for (let j = 0; j < this.jointCount; j++) {
+      this.rowNode[j] = rank[this.rowNode[j]];
+      if (this.nodeOfA[j] !== -1) this.nodeOfA[j] = rank[this.nodeOfA[j]];
+      if (this.nodeOfB[j] !== -1) this.nodeOfB[j] = rank[this.nodeOfB[j]];
     }
+    for (let n = 0; n < nodes; n++) if (this.nodeKind[n] === BODY) this.bodyNode[this.nodeBody[n]] = n;
   }
 
   /**
@@ -433,42 +467,92 @@ export class JointTree {
     }
   }
 
+  /**
+   * Every edge of the tree joins a joint node to a body node, and its block H touches only the body's
+   * 3 velocity rows and at most 3 joint rows; a joint with 2 rows has a zero third Jacobian row, so
+   * every H, and L = D⁻¹ H, is a 3 × 3 block, and the loops here are unrolled. Only roots can be
+   * larger than 3 (a body with its grounded joint's rows): such a node is always a root.
+   */
   private factorTree(ctx: JointContext): void {
     const count = this.jointCount;
     if (count === 0) return;
     const state = ctx.state;
-    for (let j = 0; j < count; j++) this.joints[j].treeFill(state, this.jA, this.jB, this.err, j);
-    this.fillBlocks(ctx.invMass, ctx.invInertia);
+    const jA = this.jA;
+    const jB = this.jB;
+    for (let j = 0; j < count; j++) this.joints[j].treeFill(state, jA, jB, this.err, j);
+    this.fillPivots(ctx.invMass, ctx.invInertia);
     const nodes = this.nodeCount;
-    const order = this.order;
+    const parent = this.parent;
+    const nodeKind = this.nodeKind;
+    const nodeOfA = this.nodeOfA;
     const d = this.d;
-    const hp = this.hp;
     const dInv = this.dInv;
     const l = this.l;
-    for (let q = 0; q < nodes; q++) {
-      const n = order[q];
+    for (let n = 0; n < nodes; n++) {
       const o = SS * n;
-      const dim = this.nodeDim[n];
-      invertBlock(d, dInv, o, dim);
-      const p = this.parent[n];
+      invertBlock(d, dInv, o, this.nodeDim[n]);
+      const p = parent[n];
       if (p === -1) continue;
-      const dimP = this.nodeDim[p];
+      // H: the Jacobian block of the edge's joint at the edge's body, transposed when the body is
+      // the child (rows are the child's, columns the parent's)
+      const childIsJoint = nodeKind[n] !== BODY;
+      const j = (childIsJoint ? nodeKind[n] : nodeKind[p]) - 1;
+      const jac = nodeOfA[j] === (childIsJoint ? p : n) ? jA : jB;
+      const m = 9 * j;
+      const t = childIsJoint ? 1 : 3;
+      const u = childIsJoint ? 3 : 1;
+      const h00 = jac[m];
+      const h01 = jac[m + t];
+      const h02 = jac[m + 2 * t];
+      const h10 = jac[m + u];
+      const h11 = jac[m + u + t];
+      const h12 = jac[m + u + 2 * t];
+      const h20 = jac[m + 2 * u];
+      const h21 = jac[m + 2 * u + t];
+      const h22 = jac[m + 2 * u + 2 * t];
+      const i00 = dInv[o];
+      const i01 = dInv[o + 1];
+      const i02 = dInv[o + 2];
+      const i11 = dInv[o + S + 1];
+      const i12 = dInv[o + S + 2];
+      const i22 = dInv[o + 2 * S + 2];
+      // L = D⁻¹ H (D⁻¹ is symmetric)
+      const l00 = i00 * h00 + i01 * h10 + i02 * h20;
+      const l01 = i00 * h01 + i01 * h11 + i02 * h21;
+      const l02 = i00 * h02 + i01 * h12 + i02 * h22;
+      const l10 = i01 * h00 + i11 * h10 + i12 * h20;
+      const l11 = i01 * h01 + i11 * h11 + i12 * h21;
+      const l12 = i01 * h02 + i11 * h12 + i12 * h22;
+      const l20 = i02 * h00 + i12 * h10 + i22 * h20;
+      const l21 = i02 * h01 + i12 * h11 + i22 * h21;
+      const l22 = i02 * h02 + i12 * h12 + i22 * h22;
+      const lo = 9 * n;
+      l[lo] = l00;
+      l[lo + 1] = l01;
+      l[lo + 2] = l02;
+      l[lo + 3] = l10;
+      l[lo + 4] = l11;
+      l[lo + 5] = l12;
+      l[lo + 6] = l20;
+      l[lo + 7] = l21;
+      l[lo + 8] = l22;
+      // D_p -= Hᵀ L, which is symmetric
       const op = SS * p;
-      // L = D⁻¹ H (dim × dimP), then D_p -= Hᵀ L
-      for (let r = 0; r < dim; r++) {
-        for (let c = 0; c < dimP; c++) {
-          let s = 0;
-          for (let k = 0; k < dim; k++) s += dInv[o + S * r + k] * hp[o + S * k + c];
-          l[o + S * r + c] = s;
-        }
-      }
-      for (let r = 0; r < dimP; r++) {
-        for (let c = 0; c < dimP; c++) {
-          let s = 0;
-          for (let k = 0; k < dim; k++) s += hp[o + S * k + r] * l[o + S * k + c];
-          d[op + S * r + c] -= s;
-        }
-      }
+      const e00 = h00 * l00 + h10 * l10 + h20 * l20;
+      const e01 = h00 * l01 + h10 * l11 + h20 * l21;
+      const e02 = h00 * l02 + h10 * l12 + h20 * l22;
+      const e11 = h01 * l01 + h11 * l11 + h21 * l21;
+      const e12 = h01 * l02 + h11 * l12 + h21 * l22;
+      const e22 = h02 * l02 + h12 * l12 + h22 * l22;
+      d[op] -= e00;
+      d[op + 1] -= e01;
+      d[op + 2] -= e02;
+      d[op + S] -= e01;
+      d[op + S + 1] -= e11;
+      d[op + S + 2] -= e12;
+      d[op + 2 * S] -= e02;
+      d[op + 2 * S + 1] -= e12;
+      d[op + 2 * S + 2] -= e22;
     }
   }
 
@@ -541,46 +625,37 @@ export class JointTree {
     }
   }
 
-  /** Sets each node's pivot to its block of H (mass and grounded rows) and its block to the parent. */
-  private fillBlocks(invMass: Float64Array, invInertia: Float64Array): void {
+  /**
+   * Sets each node's pivot block before elimination: a body's mass and inertia, followed by its
+   * grounded joint's rows if it has one; zero for a joint.
+   */
+  private fillPivots(invMass: Float64Array, invInertia: Float64Array): void {
     const d = this.d;
-    const hp = this.hp;
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
       const o = SS * n;
-      d.fill(0, o, o + SS);
-      hp.fill(0, o, o + SS);
-      if (this.nodeKind[n] === BODY) {
-        const b = this.nodeBody[n];
-        const m = 1 / invMass[b];
-        d[o] = m;
-        d[o + S + 1] = m;
-        d[o + 2 * S + 2] = 1 / invInertia[b];
-        const g = this.nodeGround[n];
-        if (g !== -1) {
-          const block = this.nodeOfA[g] === n ? this.jA : this.jB;
-          for (let r = 0, rows = this.rows[g]; r < rows; r++) {
-            for (let c = 0; c < 3; c++) {
-              const v = block[9 * g + 3 * r + c];
-              d[o + S * (3 + r) + c] = v;
-              d[o + S * c + 3 + r] = v;
-            }
-          }
-        }
-      }
-      const p = this.parent[n];
-      if (p === -1) continue;
-      // between a joint node and one of its bodies, H is that body's Jacobian block (transposed when
-      // the body is the child); it only touches the body's velocity rows
-      const jointNode = this.nodeKind[n] === BODY ? p : n;
-      const bodyNode = jointNode === n ? p : n;
-      const j = this.nodeKind[jointNode] - 1;
-      const block = this.nodeOfA[j] === bodyNode ? this.jA : this.jB;
-      for (let r = 0, rows = this.rows[j]; r < rows; r++) {
+      const isBody = this.nodeKind[n] === BODY;
+      const b = this.nodeBody[n];
+      const m = isBody ? 1 / invMass[b] : 0;
+      d[o] = m;
+      d[o + 1] = 0;
+      d[o + 2] = 0;
+      d[o + S] = 0;
+      d[o + S + 1] = m;
+      d[o + S + 2] = 0;
+      d[o + 2 * S] = 0;
+      d[o + 2 * S + 1] = 0;
+      d[o + 2 * S + 2] = isBody ? 1 / invInertia[b] : 0;
+      const g = this.nodeGround[n];
+      if (g === -1) continue;
+      const block = this.nodeOfA[g] === n ? this.jA : this.jB;
+      const rows = this.rows[g];
+      for (let r = 0; r < rows; r++) {
         for (let c = 0; c < 3; c++) {
-          const v = block[9 * j + 3 * r + c];
-          if (jointNode === n) hp[o + S * r + c] = v;
-          else hp[o + S * c + r] = v;
+          const v = block[9 * g + 3 * r + c];
+          d[o + S * (3 + r) + c] = v;
+          d[o + S * c + 3 + r] = v;
         }
+        for (let c = 0; c < rows; c++) d[o + S * (3 + r) + 3 + c] = 0;
       }
     }
   }
@@ -599,22 +674,45 @@ export class JointTree {
     const jB = this.jB;
     const err = this.err;
     for (let j = 0; j < count; j++) {
-      const joint = this.joints[j];
-      const sa = joint.bodyA.slot * STATE_STRIDE;
-      const sb = joint.bodyB.slot * STATE_STRIDE;
+      const sa = this.slotA[j] * STATE_STRIDE;
+      const sb = this.slotB[j] * STATE_STRIDE;
       const vAx = state[sa + S_VX];
       const vAy = state[sa + S_VY];
       const wA = state[sa + S_W];
       const vBx = state[sb + S_VX];
       const vBy = state[sb + S_VY];
       const wB = state[sb + S_W];
+      // three rows each: a joint with two has a zero third row (see fillPointRows)
       const o = S * this.rowNode[j] + this.rowOffset[j];
-      for (let r = 0, rows = this.rows[j]; r < rows; r++) {
-        const m = 9 * j + 3 * r;
-        const cdot =
-          jA[m] * vAx + jA[m + 1] * vAy + jA[m + 2] * wA + jB[m] * vBx + jB[m + 1] * vBy + jB[m + 2] * wB;
-        x[o + r] = -(cdot + biasRate * err[3 * j + r]);
-      }
+      const m = 9 * j;
+      const e = 3 * j;
+      x[o] = -(
+        jA[m] * vAx +
+        jA[m + 1] * vAy +
+        jA[m + 2] * wA +
+        jB[m] * vBx +
+        jB[m + 1] * vBy +
+        jB[m + 2] * wB +
+        biasRate * err[e]
+      );
+      x[o + 1] = -(
+        jA[m + 3] * vAx +
+        jA[m + 4] * vAy +
+        jA[m + 5] * wA +
+        jB[m + 3] * vBx +
+        jB[m + 4] * vBy +
+        jB[m + 5] * wB +
+        biasRate * err[e + 1]
+      );
+      x[o + 2] = -(
+        jA[m + 6] * vAx +
+        jA[m + 7] * vAy +
+        jA[m + 8] * wA +
+        jB[m + 6] * vBx +
+        jB[m + 7] * vBy +
+        jB[m + 8] * wB +
+        biasRate * err[e + 2]
+      );
     }
     this.substitute();
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
@@ -631,52 +729,64 @@ export class JointTree {
     }
   }
 
-  /** Solves L D Lᵀ x = x in place. */
+  /** Solves L D Lᵀ x = x in place (L in 3 × 3 blocks, see factorTree; nodes children first). */
   private substitute(): void {
     const nodes = this.nodeCount;
-    const order = this.order;
+    const parent = this.parent;
     const x = this.x;
     const l = this.l;
     const dInv = this.dInv;
-    // forward: x_p -= Lᵀ x_n, children first
-    for (let q = 0; q < nodes; q++) {
-      const n = order[q];
-      const p = this.parent[n];
-      if (p === -1) continue;
-      const dim = this.nodeDim[n];
-      const o = SS * n;
-      for (let c = 0, dimP = this.nodeDim[p]; c < dimP; c++) {
-        let s = 0;
-        for (let k = 0; k < dim; k++) s += l[o + S * k + c] * x[S * n + k];
-        x[S * p + c] -= s;
-      }
-    }
-    // diagonal: x = D⁻¹ x (the scratch tail of x holds the node's unscaled values meanwhile)
+    // forward, children first: once a node's children are done its value is final; it goes to the
+    // parent (x_p -= Lᵀ x_n) and is then scaled by its pivot (x_n = D⁻¹ x_n)
     for (let n = 0; n < nodes; n++) {
+      const xn = S * n;
       const o = SS * n;
+      const x0 = x[xn];
+      const x1 = x[xn + 1];
+      const x2 = x[xn + 2];
+      const p = parent[n];
+      if (p !== -1) {
+        const xp = S * p;
+        const lo = 9 * n;
+        x[xp] -= l[lo] * x0 + l[lo + 3] * x1 + l[lo + 6] * x2;
+        x[xp + 1] -= l[lo + 1] * x0 + l[lo + 4] * x1 + l[lo + 7] * x2;
+        x[xp + 2] -= l[lo + 2] * x0 + l[lo + 5] * x1 + l[lo + 8] * x2;
+      }
       const dim = this.nodeDim[n];
-      const xo = S * n;
-      for (let k = 0; k < dim; k++) scratch[k] = x[xo + k];
-      for (let r = 0; r < dim; r++) {
-        let s = 0;
-        for (let k = 0; k < dim; k++) s += dInv[o + S * r + k] * scratch[k];
-        x[xo + r] = s;
+      if (dim > 3) {
+        for (let k = 0; k < dim; k++) scratch[k] = x[xn + k];
+        for (let r = 0; r < dim; r++) {
+          let s = 0;
+          for (let k = 0; k < dim; k++) s += dInv[o + S * r + k] * scratch[k];
+          x[xn + r] = s;
+        }
+        continue;
       }
+      x[xn] = dInv[o] * x0 + dInv[o + 1] * x1 + dInv[o + 2] * x2;
+      x[xn + 1] = dInv[o + S] * x0 + dInv[o + S + 1] * x1 + dInv[o + S + 2] * x2;
+      x[xn + 2] = dInv[o + 2 * S] * x0 + dInv[o + 2 * S + 1] * x1 + dInv[o + 2 * S + 2] * x2;
     }
-    // backward: x_n -= L x_p, parents first
-    for (let q = nodes - 1; q >= 0; q--) {
-      const n = order[q];
-      const p = this.parent[n];
+    // backward, parents first: x_n -= L x_p
+    for (let n = nodes - 1; n >= 0; n--) {
+      const p = parent[n];
       if (p === -1) continue;
-      const o = SS * n;
-      const dimP = this.nodeDim[p];
-      for (let r = 0, dim = this.nodeDim[n]; r < dim; r++) {
-        let s = 0;
-        for (let c = 0; c < dimP; c++) s += l[o + S * r + c] * x[S * p + c];
-        x[S * n + r] -= s;
-      }
+      const xn = S * n;
+      const xp = S * p;
+      const lo = 9 * n;
+      const x0 = x[xp];
+      const x1 = x[xp + 1];
+      const x2 = x[xp + 2];
+      x[xn] -= l[lo] * x0 + l[lo + 1] * x1 + l[lo + 2] * x2;
+      x[xn + 1] -= l[lo + 3] * x0 + l[lo + 4] * x1 + l[lo + 5] * x2;
+      x[xn + 2] -= l[lo + 6] * x0 + l[lo + 7] * x1 + l[lo + 8] * x2;
     }
   }
+}
+
+/** Moves a[n] to a[rank[n]] for the first `count` entries, through `tmp`. */
+function permute(a: Int32Array, rank: Int32Array, tmp: Int32Array, count: number): void {
+  for (let n = 0; n < count; n++) tmp[rank[n]] = a[n];
+  for (let n = 0; n < count; n++) a[n] = tmp[n];
 }
 
 /** Whether the joint has rows for the tree and bodies the tree can take (dynamic ones must turn). */
@@ -746,6 +856,12 @@ function invert2(m: Float64Array, out: Float64Array, o: number): void {
   out[o + 1] = -det * b;
   out[o + S] = -det * b;
   out[o + S + 1] = det * a;
+  // the third row and column stay zero: the joint's padding row (see factorTree)
+  out[o + 2] = 0;
+  out[o + S + 2] = 0;
+  out[o + 2 * S] = 0;
+  out[o + 2 * S + 1] = 0;
+  out[o + 2 * S + 2] = 0;
 }
 
 /** Closed-form inverse of a symmetric 3 × 3 block (a body, or the rows of a weld), by cofactors. */

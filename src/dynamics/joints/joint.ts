@@ -169,6 +169,11 @@ export abstract class Joint {
     return false;
   }
 
+  /** @internal Whether solve() has rows to iterate while the tree solver owns the rigid ones. */
+  iteratesInTree(): boolean {
+    return false;
+  }
+
   /** @internal Number of rigid rows this joint can give the direct tree solver (0 = none). */
   treeRows(): number {
     return 0;
@@ -207,8 +212,14 @@ export abstract class Joint {
     jB[m + 3] = 0;
     jB[m + 4] = 1;
     jB[m + 5] = this.rBx;
+    // a third row of zeros, which a weld overwrites with its angular row
+    for (let c = 6; c < 9; c++) {
+      jA[m + c] = 0;
+      jB[m + c] = 0;
+    }
     err[3 * j] = this.sepX;
     err[3 * j + 1] = this.sepY;
+    err[3 * j + 2] = 0;
   }
 
   /** @internal */

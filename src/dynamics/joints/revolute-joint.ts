@@ -133,6 +133,11 @@ export class RevoluteJoint extends Joint {
     return this.o.enableLimit || this.o.enableMotor;
   }
 
+  /** @internal */
+  override iteratesInTree(): boolean {
+    return this.o.enableLimit || this.o.enableMotor || this.o.enableSpring;
+  }
+
   /** @internal the point rows */
   override treeRows(): number {
     return 2;
