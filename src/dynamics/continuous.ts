@@ -145,7 +145,7 @@ function sweepAgainst(
       const other = candidates.data[i];
       if ((shapes.flags[other] & SHAPE_SENSOR) !== 0 || !shouldShapesCollide(shapes, s, other)) continue;
       const ob = shapes.body[other];
-      if (ob === b || (bodies.flags[ob] & FLAG_BULLET) !== 0) continue;
+      if (ob === b || (bodies.flags[ob] & FLAG_BULLET) !== 0 || !core.jointsAllowCollision(b, ob)) continue;
       makeProxy(shapes.geometry[other]!, input.proxyA);
       const sa = input.sweepA;
       sa.localCenterX = 0;

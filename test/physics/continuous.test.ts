@@ -187,6 +187,25 @@ describe('bullets', () => {
     }
   });
 
+  it('a bullet tied to the plank by a joint without collideConnected flies through it', () => {
+    const { world, plank, shot } = gun(true);
+    // a slack rope (a spring of 0 Hz, at most 40 m): it never pulls in these 5 steps (the ends get
+    // at most 19 m apart), it only forbids contact between them
+    world.createJoint({
+      type: 'distance',
+      bodyA: plank,
+      bodyB: shot,
+      enableSpring: true,
+      hertz: 0,
+      minLength: 0,
+      maxLength: 40,
+    });
+    for (let i = 0; i < 5; i++) world.step(DT);
+    // unhindered flight: 5 steps of 5 m each
+    expect(shot.position.x).toBeCloseTo(25, 9);
+    expect(plank.linearVelocity.x).toBe(0);
+  });
+
   it('a bullet stops at a kinematic plank moving across its path', () => {
     const world = new World({ gravity: { x: 0, y: 0 } });
     const plank = world.createBody({
