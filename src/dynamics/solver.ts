@@ -132,6 +132,8 @@ export function solve(core: WorldCore, dt: number): void {
   const awake = core.awake;
   const awakeCount = core.awakeCount;
   const settings = core.settings;
+  // the tree projects again after the others only if they act on its bodies
+  const coupled = tree.isCoupled(cc.ids, cc.count);
   for (let i = 0; i < subSteps; i++) {
     integrateVelocities(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, settings.maxLinearSpeed);
     for (let j = 0; j < jointCount; j++) joints[j].warmStart(ctx);
@@ -141,13 +143,13 @@ export function solve(core: WorldCore, dt: number): void {
     tree.project(state, treeBias);
     for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, true);
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
-    tree.project(state, treeBias);
+    if (coupled) tree.project(state, treeBias);
     integratePositions(state, awake, awakeCount, h);
     tree.factor(ctx);
     tree.project(state, 0);
     for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, false);
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
-    tree.project(state, 0);
+    if (coupled) tree.project(state, 0);
   }
   applyRestitution(cc, state, settings.restitutionThreshold);
   const contacts = core.contacts;

@@ -107,6 +107,10 @@ export class JointTree {
   private rank = new Int32Array(32);
   private nodeCount = 0;
 
+  /** per body slot: 1 for the dynamic bodies of tree joints (cleared at the next build) */
+  private inTreeBody = new Uint8Array(64);
+  private marked = new Int32Array(32);
+  private markedCount = 0;
   /** per body slot: union-find parent and its node */
   private root = new Int32Array(64);
   /** per body slot: cluster union-find (not through the ground); at a root, its loops and ground */
@@ -133,7 +137,10 @@ export class JointTree {
       this.clusterGrounded = growU8(this.clusterGrounded, kind.length);
       this.counted = growU8(this.counted, kind.length);
       this.bodyNode = growI32(this.bodyNode, kind.length);
+      this.inTreeBody = growU8(this.inTreeBody, kind.length);
     }
+    for (let i = 0; i < this.markedCount; i++) this.inTreeBody[this.marked[i]] = 0;
+    this.markedCount = 0;
     this.joints.length = 0;
     this.closures.length = 0;
     this.axials.length = 0;
@@ -292,6 +299,7 @@ export class JointTree {
       const cap = Math.max(2 * this.rows.length, count);
       this.rows = growI32(this.rows, cap);
       this.slotA = growI32(this.slotA, cap);
+      this.marked = growI32(this.marked, 2 * cap);
       this.slotB = growI32(this.slotB, cap);
       this.rowNode = growI32(this.rowNode, cap);
       this.rowOffset = growI32(this.rowOffset, cap);
@@ -332,6 +340,8 @@ export class JointTree {
     const node = this.bodyNode[b];
     if (node !== -1) return node;
     this.bodyNode[b] = nodes;
+    this.inTreeBody[b] = 1;
+    this.marked[this.markedCount++] = b;
     this.nodeKind[nodes] = BODY;
     this.nodeDim[nodes] = 3;
     this.nodeBody[nodes] = b;
@@ -438,6 +448,24 @@ export class JointTree {
       if (this.nodeOfB[j] !== -1) this.nodeOfB[j] = rank[this.nodeOfB[j]];
     }
     for (let n = 0; n < nodes; n++) if (this.nodeKind[n] === BODY) this.bodyNode[this.nodeBody[n]] = n;
+  }
+
+  /**
+   * Whether anything else acts on the tree's bodies in the solver loop: a contact constraint among
+   * the `count` of `ids` (body A, body B, contact per constraint) or an iterative joint. When nothing
+   * does, one projection per pass leaves the tree rows exact and a second one would change nothing.
+   */
+  isCoupled(ids: Int32Array, count: number): boolean {
+    if (this.jointCount === 0) return false;
+    const marks = this.inTreeBody;
+    for (let i = 0; i < count; i++) {
+      if (marks[ids[3 * i]] !== 0 || marks[ids[3 * i + 1]] !== 0) return true;
+    }
+    for (let j = 0; j < this.iterative.length; j++) {
+      const joint = this.iterative[j];
+      if (marks[joint.bodyA.slot] !== 0 || marks[joint.bodyB.slot] !== 0) return true;
+    }
+    return false;
   }
 
   /**
