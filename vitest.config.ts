@@ -14,5 +14,8 @@ export default defineConfig({
     // Files share a worker's modules: saves a process start per file, and lets a test fail if the engine
     // kept state from one world (or one query) that changed the result of another.
     isolate: false,
+    // Vitest leaves a core free by default, which on a 2-core machine means one worker: use both.
+    maxWorkers: 2,
+    minWorkers: 1,
   },
 });
