@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { type Body, type Joint, Shape, World } from '../../src/index';
+import { type Body, type DistanceJoint, type Joint, Shape, World } from '../../src/index';
 import { dist, runYielding } from '../helpers/world';
 
 const DT = 1 / 60;
@@ -34,6 +34,40 @@ describe('joint structures', () => {
     ball.applyLinearImpulse({ x: 300, y: 0 });
     await runYielding(world, 10);
     expect(maxSeparation(joints)).toBeLessThan(0.01);
+  });
+
+  it('a rope of 50 rigid distance rods with a 100:1 weight keeps its length; at rest the top rod carries all', async () => {
+    // matter.js-style: beads (0.1 kg) joined by rods of 0.2 m, a 10 kg weight at the end
+    function rope(kick: number) {
+      const world = new World({ enableSleep: false });
+      const anchor = world.createBody();
+      const rods: DistanceJoint[] = [];
+      let prev: Body = anchor;
+      for (let i = 1; i <= 51; i++) {
+        const last = i === 51;
+        const bead = world.createBody({ type: 'dynamic', position: { x: 0, y: -0.2 * i } });
+        const shape = bead.createShape(Shape.circle(last ? 0.15 : 0.05));
+        shape.density = (last ? 10 : 0.1) / bead.mass;
+        rods.push(world.createJoint({ type: 'distance', bodyA: prev, bodyB: bead, length: 0.2 }));
+        prev = bead;
+      }
+      prev.applyLinearImpulse({ x: kick, y: 0 });
+      return { world, rods };
+    }
+    const swinging = rope(60);
+    let worst = 0;
+    for (let s = 0; s < 10; s++) {
+      await runYielding(swinging.world, 1);
+      for (const rod of swinging.rods) worst = Math.max(worst, Math.abs(rod.currentLength - 0.2));
+    }
+    expect(worst).toBeLessThan(0.001);
+
+    const hanging = rope(0);
+    for (let i = 0; i < 180; i++) hanging.world.step(DT);
+    // the top rod holds 50 beads of 0.1 kg and the 10 kg weight: 150 N up on the first bead
+    const top = hanging.rods[0].getReactionForce();
+    expect(top.y).toBeCloseTo(150, 6);
+    expect(Math.abs(top.x)).toBeLessThan(1e-9);
   });
 
   it('a hanging chain at rest: each hinge carries the weight below it; both ends of a bridge hold', () => {

@@ -99,12 +99,61 @@ export class DistanceJoint extends Joint {
     return 0;
   }
 
+  /** Whether the joint is a rigid rod (no spring, or a range of zero width). */
+  private isRigid(): boolean {
+    return !this.o.enableSpring || this.o.minLength === this.o.maxLength;
+  }
+
+  /** @internal the rod's row */
+  override treeRows(): number {
+    return this.isRigid() ? 1 : 0;
+  }
+
+  /** @internal */
+  override treeFill(
+    state: Float64Array,
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+  ): void {
+    this.updateAnchors(state);
+    const length = Math.sqrt(this.sepX * this.sepX + this.sepY * this.sepY);
+    // at zero length the axis keeps its last direction
+    if (length > 1e-12) {
+      this.ux = this.sepX / length;
+      this.uy = this.sepY / length;
+    }
+    const ux = this.ux;
+    const uy = this.uy;
+    const m = 9 * j;
+    jA[m] = -ux;
+    jA[m + 1] = -uy;
+    jA[m + 2] = -(this.rAx * uy - this.rAy * ux);
+    jB[m] = ux;
+    jB[m + 1] = uy;
+    jB[m + 2] = this.rBx * uy - this.rBy * ux;
+    // rows 1 and 2 are zero (the tree works in blocks of three rows)
+    for (let c = 3; c < 9; c++) {
+      jA[m + c] = 0;
+      jB[m + c] = 0;
+    }
+    err[3 * j] = length - this.o.length;
+    err[3 * j + 1] = 0;
+    err[3 * j + 2] = 0;
+  }
+
+  /** @internal */
+  override treeAddImpulse(solution: Float64Array, o: number): void {
+    this.impulse -= solution[o];
+  }
+
   /** @internal */
   prepare(ctx: JointContext): void {
     this.prepareBase(ctx);
     const o = this.o;
     makeSoftness(o.enableSpring ? o.hertz : 0, o.dampingRatio, ctx.h, this.spring);
-    if (!o.enableSpring || o.minLength === o.maxLength) {
+    if (this.isRigid()) {
       this.lowerImpulse = 0;
       this.upperImpulse = 0;
     }
@@ -234,7 +283,7 @@ export class DistanceJoint extends Joint {
         this.upperImpulse = next;
         this.apply(state, old - next);
       }
-    } else {
+    } else if (!this.inTree) {
       // rigid rod
       const C = length - o.length;
       let bias = 0;

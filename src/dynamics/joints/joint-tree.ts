@@ -835,11 +835,16 @@ const work = new Float64Array(SS);
 
 /**
  * Inverts the symmetric dim × dim block at `o` (stride S) of `m` into `out`: in closed form up to
- * 3 rows, else by Gauss-Jordan elimination in natural order. No pivoting is needed here: a block is either positive definite (a
- * body), negative definite (a joint) or a body's positive definite rows followed by its grounded
- * joint's rows, whose Schur complement is negative definite. A zero pivot gives a zero row.
+ * 3 rows, zeroing the rest of the 3 × 3 block, else (a root with its grounded joint's rows) by
+ * Gauss-Jordan elimination in natural order. No pivoting is needed here: a block is either positive
+ * definite (a body), negative definite (a joint) or a body's positive definite rows followed by its
+ * grounded joint's rows, whose Schur complement is negative definite. A zero pivot gives a zero row.
  */
 function invertBlock(m: Float64Array, out: Float64Array, o: number, dim: number): void {
+  if (dim === 1) {
+    invert1(m, out, o);
+    return;
+  }
   if (dim === 2) {
     invert2(m, out, o);
     return;
@@ -871,6 +876,20 @@ function invertBlock(m: Float64Array, out: Float64Array, o: number, dim: number)
       }
     }
   }
+}
+
+/** Inverse of a 1 × 1 block (the row of a rod); the rest of the 3 × 3 block is zero (see factorTree). */
+function invert1(m: Float64Array, out: Float64Array, o: number): void {
+  const a = m[o];
+  out[o] = a !== 0 ? 1 / a : 0;
+  out[o + 1] = 0;
+  out[o + 2] = 0;
+  out[o + S] = 0;
+  out[o + S + 1] = 0;
+  out[o + S + 2] = 0;
+  out[o + 2 * S] = 0;
+  out[o + 2 * S + 1] = 0;
+  out[o + 2 * S + 2] = 0;
 }
 
 /** Closed-form inverse of a symmetric 2 × 2 block (the rows of a hinge). */
