@@ -107,6 +107,10 @@ export class JointTree {
   private rank = new Int32Array(32);
   private nodeCount = 0;
 
+  /** per active joint (build's input): its bodies' slots and whether the tree could take it */
+  private activeA = new Int32Array(16);
+  private activeB = new Int32Array(16);
+  private activeEligible = new Uint8Array(16);
   /** per body slot: 1 for the dynamic bodies of tree joints (cleared at the next build) */
   private inTreeBody = new Uint8Array(64);
   private marked = new Int32Array(32);
@@ -151,20 +155,31 @@ export class JointTree {
       if (kind[joint.bodyA.slot] !== DYNAMIC) ground = joint.bodyA.slot;
       else if (kind[joint.bodyB.slot] !== DYNAMIC) ground = joint.bodyB.slot;
     }
+    if (this.activeA.length < active.length) {
+      const cap = Math.max(2 * this.activeA.length, active.length);
+      this.activeA = growI32(this.activeA, cap);
+      this.activeB = growI32(this.activeB, cap);
+      this.activeEligible = growU8(this.activeEligible, cap);
+    }
     for (let j = 0; j < active.length; j++) {
       const joint = active[j];
       joint.inTree = false;
       joint.closure = false;
       joint.treeAxialMass = 0;
-      this.touch(joint.bodyA.slot);
-      this.touch(joint.bodyB.slot);
-    }
-    this.countLoops(active, kind, invMass, invInertia);
-    for (let j = 0; j < active.length; j++) {
-      const joint = active[j];
-      if (!eligible(joint, kind, invMass, invInertia)) continue;
       const a = joint.bodyA.slot;
       const b = joint.bodyB.slot;
+      this.activeA[j] = a;
+      this.activeB[j] = b;
+      this.activeEligible[j] = eligible(joint, a, b, kind, invMass, invInertia) ? 1 : 0;
+      this.touch(a);
+      this.touch(b);
+    }
+    this.countLoops(active.length, kind);
+    for (let j = 0; j < active.length; j++) {
+      if (this.activeEligible[j] === 0) continue;
+      const joint = active[j];
+      const a = this.activeA[j];
+      const b = this.activeB[j];
       const dynA = kind[a] === DYNAMIC;
       const dynB = kind[b] === DYNAMIC;
       if (this.loops[this.findCluster(dynA ? a : b)] > MAX_LOOPS) continue;
@@ -215,29 +230,25 @@ export class JointTree {
    * each cluster's root, its number of independent loops: joints - bodies + 1, or joints - bodies
    * when the cluster is held by a non-dynamic body.
    */
-  private countLoops(
-    active: readonly Joint[],
-    kind: Uint8Array,
-    invMass: Float64Array,
-    invInertia: Float64Array,
-  ): void {
+  private countLoops(count: number, kind: Uint8Array): void {
     const loops = this.loops;
-    for (let j = 0; j < active.length; j++) {
-      const joint = active[j];
-      if (!eligible(joint, kind, invMass, invInertia)) continue;
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+    const activeA = this.activeA;
+    const activeB = this.activeB;
+    const activeEligible = this.activeEligible;
+    for (let j = 0; j < count; j++) {
+      if (activeEligible[j] === 0) continue;
+      const a = activeA[j];
+      const b = activeB[j];
       if (kind[a] === DYNAMIC && kind[b] === DYNAMIC) {
         const ra = this.findCluster(a);
         const rb = this.findCluster(b);
         if (ra !== rb) this.cluster[ra] = rb;
       }
     }
-    for (let j = 0; j < active.length; j++) {
-      const joint = active[j];
-      if (!eligible(joint, kind, invMass, invInertia)) continue;
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+    for (let j = 0; j < count; j++) {
+      if (activeEligible[j] === 0) continue;
+      const a = activeA[j];
+      const b = activeB[j];
       const r = this.findCluster(kind[a] === DYNAMIC ? a : b);
       loops[r]++;
       if (kind[a] !== DYNAMIC || kind[b] !== DYNAMIC) this.clusterGrounded[r] = 1;
@@ -248,10 +259,9 @@ export class JointTree {
         loops[r]--;
       }
     }
-    for (let j = 0; j < active.length; j++) {
-      const joint = active[j];
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+    for (let j = 0; j < count; j++) {
+      const a = activeA[j];
+      const b = activeB[j];
       for (let side = 0; side < 2; side++) {
         const body = side === 0 ? a : b;
         if (this.cluster[body] !== body || this.counted[body] === 2) continue;
@@ -818,10 +828,15 @@ function permute(a: Int32Array, rank: Int32Array, tmp: Int32Array, count: number
 }
 
 /** Whether the joint has rows for the tree and bodies the tree can take (dynamic ones must turn). */
-function eligible(joint: Joint, kind: Uint8Array, invMass: Float64Array, invInertia: Float64Array): boolean {
+function eligible(
+  joint: Joint,
+  a: number,
+  b: number,
+  kind: Uint8Array,
+  invMass: Float64Array,
+  invInertia: Float64Array,
+): boolean {
   if (joint.treeRows() === 0) return false;
-  const a = joint.bodyA.slot;
-  const b = joint.bodyB.slot;
   const dynA = kind[a] === DYNAMIC;
   const dynB = kind[b] === DYNAMIC;
   if (!dynA && !dynB) return false;
