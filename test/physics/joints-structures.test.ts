@@ -70,6 +70,38 @@ describe('joint structures', () => {
     expect(Math.abs(top.x)).toBeLessThan(1e-9);
   });
 
+  it('a weight hung from two rods in a V: each rod carries m g / (2 cos θ) and keeps its length', () => {
+    for (const degrees of [45, 80]) {
+      const theta = (degrees * Math.PI) / 180;
+      const world = new World({ enableSleep: false });
+      const ground = world.createBody();
+      // a 1 kg box at the V's tip, and a 10 kg ball on a third rod below it
+      const box = world.createBody({ type: 'dynamic', position: { x: 0, y: -Math.cos(theta) } });
+      box.createShape(Shape.box(0.1, 0.1), { density: 1 / 0.04 });
+      const rods = [-1, 1].map((side) =>
+        world.createJoint({
+          type: 'distance',
+          bodyA: ground,
+          bodyB: box,
+          localAnchorA: { x: side * Math.sin(theta), y: 0 },
+          localAnchorB: { x: 0, y: 0 },
+          length: 1,
+        }),
+      );
+      const ball = world.createBody({ type: 'dynamic', position: { x: 0, y: -Math.cos(theta) - 0.5 } });
+      ball.createShape(Shape.circle(0.1), { density: 10 / (Math.PI * 0.01) });
+      world.createJoint({ type: 'distance', bodyA: box, bodyB: ball, length: 0.5 });
+      for (let i = 0; i < 180; i++) world.step(DT);
+      const tension = (11 * 10) / (2 * Math.cos(theta));
+      for (const rod of rods) {
+        const f = rod.getReactionForce();
+        expect(Math.abs(Math.hypot(f.x, f.y) - tension) / tension).toBeLessThan(0.01);
+        expect(Math.abs(rod.currentLength - 1)).toBeLessThan(0.0005);
+      }
+      expect(Math.abs(box.position.x)).toBeLessThan(0.0005);
+    }
+  });
+
   it('a hanging chain at rest: each hinge carries the weight below it; both ends of a bridge hold', () => {
     const world = new World({ enableSleep: false });
     const anchor = world.createBody();

@@ -6,6 +6,7 @@ import { makeSoftness, type Softness } from '../softness';
 import type { World } from '../world';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
+import { CLOSURE_REGULARIZATION } from './joint-tree';
 
 export interface DistanceOptions {
   length: number;
@@ -294,9 +295,18 @@ export class DistanceJoint extends Joint {
         massScale = soft.massScale;
         impulseScale = soft.impulseScale;
       }
-      const impulse = -massScale * axialMass * (this.axialSpeed(state) + bias) - impulseScale * this.impulse;
+      // a rod that closes a loop of the tree moves the bodies as the tree lets them (see JointTree)
+      const mass = this.closure ? 1 / (this.closureMass[0] + CLOSURE_REGULARIZATION * k) : axialMass;
+      const impulse = -massScale * mass * (this.axialSpeed(state) + bias) - impulseScale * this.impulse;
       this.impulse += impulse;
-      this.apply(state, impulse);
+      if (this.closure) {
+        const closureImpulse = ctx.tree.closureImpulse;
+        closureImpulse[0] = impulse;
+        closureImpulse[1] = 0;
+        ctx.tree.applyClosure(this.closureIndex, state);
+      } else {
+        this.apply(state, impulse);
+      }
     }
   }
 }

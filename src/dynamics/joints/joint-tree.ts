@@ -39,6 +39,12 @@ const MAX_CLOSURE_NODES = 1024;
  */
 const MAX_LOOPS = 8;
 
+/**
+ * Share of a closing joint's own inverse mass added to its inverse mass through the tree: the tree
+ * may not let the joint move at all in some direction (two pinned bars), where that alone is singular.
+ */
+export const CLOSURE_REGULARIZATION = 0.05;
+
 /** tree hinges whose limit or motor row gets its effective mass through the tree (one solve each) */
 const MAX_AXIALS = 16;
 
@@ -62,10 +68,11 @@ export class JointTree {
   private jB = new Float64Array(16 * 9);
   private err = new Float64Array(16 * 3);
   /**
-   * Hinges that would close a loop (a bridge pinned at both ends) stay iterative, but are solved
-   * through the tree: with the effective mass K = J P M⁻¹ Jᵀ (P the projection onto the tree rows)
-   * and with their impulse applied as the tree's response to it. Without this the one hinge that
-   * closes the loop carries the load with the stiffness of its own two bodies.
+   * Hinges and rods that would close a loop (a bridge pinned at both ends, a weight hung from two
+   * rods) stay iterative, but are solved through the tree: with the effective mass K = J P M⁻¹ Jᵀ
+   * (P the projection onto the tree rows) and with their impulse applied as the tree's response to
+   * it. Without this the joint that closes the loop carries the load with the stiffness of its own
+   * two bodies.
    */
   readonly closures: Joint[] = [];
   private closureNodeA = new Int32Array(MAX_CLOSURES);
@@ -188,7 +195,7 @@ export class JointTree {
       const ra = this.find(dynA ? a : ground);
       const rb = this.find(dynB ? b : ground);
       if (ra === rb) {
-        if (joint.treeRows() === 2 && this.closures.length < MAX_CLOSURES) {
+        if (joint.treeRows() <= 2 && this.closures.length < MAX_CLOSURES) {
           joint.closure = true;
           this.closures.push(joint);
         }
@@ -613,7 +620,8 @@ export class JointTree {
       const nodeB = this.closureNodeB[c];
       const k = joint.closureMass;
       k.fill(0);
-      for (let r = 0; r < 2; r++) {
+      const rows = joint.treeRows();
+      for (let r = 0; r < rows; r++) {
         x.fill(0, 0, S * this.nodeCount);
         const m = 9 * c + 3 * r;
         for (let i = 0; i < 3; i++) {
@@ -635,7 +643,7 @@ export class JointTree {
           if (node === -1) continue;
           const jac = side === 0 ? jA : jB;
           const o = base + 3 * node;
-          for (let row = 0; row < 2; row++) {
+          for (let row = 0; row < rows; row++) {
             const q = 9 * c + 3 * row;
             k[2 * row + r] +=
               jac[q] * response[o] + jac[q + 1] * response[o + 1] + jac[q + 2] * response[o + 2];
@@ -645,7 +653,10 @@ export class JointTree {
     }
   }
 
-  /** Applies `closureImpulse` on the point rows of closure `c` as the tree's response to it. */
+  /**
+   * Applies `closureImpulse` on the rows of closure `c` as the tree's response to it (a rod has one
+   * row: its second entry must be 0).
+   */
   applyClosure(c: number, state: Float64Array): void {
     const px = this.closureImpulse[0];
     const py = this.closureImpulse[1];

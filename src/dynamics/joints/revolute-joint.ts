@@ -7,9 +7,7 @@ import type { World } from '../world';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 import { relativeAngle, solve22, solved } from './joint-math';
-
-/** share of a closing hinge's own inverse mass added to its inverse mass through the tree */
-const CLOSURE_REGULARIZATION = 0.05;
+import { CLOSURE_REGULARIZATION } from './joint-tree';
 
 export interface RevoluteOptions {
   referenceAngle: number;
