@@ -1,0 +1,139 @@
+import { describe, expect, it } from 'vitest';
+import { createRandom } from '../../scenes/random';
+import { type Body, type Joint, Shape, World } from '../../src/index';
+
+const DT = 1 / 60;
+
+/** Velocity of the material point of `body` that is at world point `p`. */
+function pointVelocity(body: Body, p: { x: number; y: number }): { x: number; y: number } {
+  const v = body.linearVelocity;
+  const w = body.angularVelocity;
+  const c = body.worldCenter;
+  return { x: v.x - w * (p.y - c.y), y: v.y + w * (p.x - c.x) };
+}
+
+/**
+ * How fast a joint's constraint is being violated: the relative velocity of its anchors (a hinge),
+ * its component along the rod (a rod), or that and the relative turn rate times `length` (a weld).
+ */
+function violationSpeed(joint: Joint, length: number): number {
+  const vA = pointVelocity(joint.bodyA, joint.anchorA);
+  const vB = pointVelocity(joint.bodyB, joint.anchorB);
+  const dx = vB.x - vA.x;
+  const dy = vB.y - vA.y;
+  if (joint.type === 'distance') {
+    const a = joint.anchorA;
+    const b = joint.anchorB;
+    const d = Math.hypot(b.x - a.x, b.y - a.y);
+    return Math.abs((dx * (b.x - a.x) + dy * (b.y - a.y)) / d);
+  }
+  const point = Math.hypot(dx, dy);
+  if (joint.type === 'revolute') return point;
+  return Math.max(point, length * Math.abs(joint.bodyB.angularVelocity - joint.bodyA.angularVelocity));
+}
+
+/**
+ * A random forest of rigid joints between boxes of very different masses (1:1000) that do not
+ * collide, each body joined to one earlier body by a hinge, a weld or a rod, or pinned to the ground.
+ */
+function randomForest(seed: number, grounded: boolean) {
+  const rng = createRandom(seed);
+  const world = new World({ gravity: { x: 0, y: grounded ? -10 : 0 }, enableSleep: false });
+  const ground = world.createBody();
+  const bodies: Body[] = [];
+  const joints: Joint[] = [];
+  const kinds = ['revolute', 'weld', 'distance'] as const;
+  for (let i = 0; i < 40; i++) {
+    const body = world.createBody({
+      type: 'dynamic',
+      position: { x: rng.range(-4, 4), y: rng.range(-4, 4) },
+      angle: rng.range(-3, 3),
+      linearVelocity: { x: rng.range(-2, 2), y: rng.range(-2, 2) },
+      angularVelocity: rng.range(-2, 2),
+    });
+    body.createShape(Shape.box(rng.range(0.1, 0.4), rng.range(0.1, 0.4)), {
+      density: 10 ** rng.range(-1.5, 1.5),
+      filter: { maskBits: 0 },
+    });
+    const root = i === 0 || (grounded && rng.nextFloat() < 0.1);
+    const other = root ? ground : bodies[rng.int(i)];
+    if (root && !grounded) {
+      bodies.push(body);
+      continue;
+    }
+    const kind = kinds[rng.int(3)];
+    const p = body.position;
+    const q = other === ground ? { x: p.x + rng.range(-1, 1), y: p.y + rng.range(-1, 1) } : other.position;
+    const anchor = {
+      x: 0.5 * (p.x + q.x) + rng.range(-0.3, 0.3),
+      y: 0.5 * (p.y + q.y) + rng.range(-0.3, 0.3),
+    };
+    if (kind === 'distance') {
+      joints.push(
+        world.createJoint({
+          type: 'distance',
+          bodyA: other,
+          bodyB: body,
+          localAnchorA: other.getLocalPoint(anchor),
+          localAnchorB: body.getLocalPoint(p),
+        }),
+      );
+    } else {
+      joints.push(world.createJoint({ type: kind, bodyA: other, bodyB: body, anchor }));
+    }
+    bodies.push(body);
+  }
+  return { world, bodies, joints };
+}
+
+function momentum(bodies: Body[]) {
+  let px = 0;
+  let py = 0;
+  for (const b of bodies) {
+    const v = b.linearVelocity;
+    px += b.mass * v.x;
+    py += b.mass * v.y;
+  }
+  return { px, py };
+}
+
+describe('joint tree', () => {
+  it('free random forests of hinges, welds and rods: no joint drifts apart; momentum is conserved', () => {
+    for (const seed of [1, 2, 3]) {
+      const { world, bodies, joints } = randomForest(seed, false);
+      const before = momentum(bodies);
+      const scale = Math.max(Math.abs(before.px), Math.abs(before.py), 1);
+      for (let s = 0; s < 120; s++) {
+        world.step(DT);
+        // the last thing a step does to the velocities is project them onto the joints' rows
+        for (const joint of joints) expect(violationSpeed(joint, 1)).toBeLessThan(1e-9);
+      }
+      const after = momentum(bodies);
+      // the joints' impulses are internal, equal and opposite (angular momentum is not exact: the pair
+      // acts at two anchors that are apart by the joint's position error, a torque of that arm)
+      expect(Math.abs(after.px - before.px) / scale).toBeLessThan(1e-9);
+      expect(Math.abs(after.py - before.py) / scale).toBeLessThan(1e-9);
+      // Positions are held by the soft bias, not exactly: within a substep the anchors move along arcs
+      // while the rows constrain their velocities on the tangent, a drift of (ω h)² r / 2 per substep
+      // (≤ 0.7 mm for ω ≤ 5 rad/s, r ≤ 3 m, h = 1/240 s) that the bias takes back at about a quarter per
+      // substep. Measured: 0.11 mm at most.
+      for (const joint of joints) {
+        if (joint.type === 'revolute' || joint.type === 'weld') {
+          const a = joint.anchorA;
+          const b = joint.anchorB;
+          expect(Math.hypot(b.x - a.x, b.y - a.y)).toBeLessThan(1e-3);
+        }
+      }
+    }
+  });
+
+  it('random forests hanging from the ground under gravity: no joint drifts apart', () => {
+    for (const seed of [4, 5, 6]) {
+      const { world, joints } = randomForest(seed, true);
+      for (let s = 0; s < 120; s++) {
+        world.step(DT);
+        for (const joint of joints) expect(violationSpeed(joint, 1)).toBeLessThan(1e-9);
+      }
+    }
+  });
+});
