@@ -12,11 +12,24 @@ function pointVelocity(body: Body, p: { x: number; y: number }): { x: number; y:
   return { x: v.x - w * (p.y - c.y), y: v.y + w * (p.x - c.x) };
 }
 
+/** Sliders' axes in body A's frame, by joint. */
+const localAxes = new Map<Joint, { x: number; y: number }>();
+
 /**
  * How fast a joint's constraint is being violated: the relative velocity of its anchors (a hinge),
- * its component along the rod (a rod), or that and the relative turn rate times `length` (a weld).
+ * its component along the rod (a rod), or that and the relative turn rate times `length` (a weld);
+ * for a slider, how fast B's anchor moves across the axis relative to A (and turns, for a prismatic).
  */
 function violationSpeed(joint: Joint, length: number): number {
+  const turn = length * Math.abs(joint.bodyB.angularVelocity - joint.bodyA.angularVelocity);
+  const localAxis = localAxes.get(joint);
+  if (localAxis !== undefined) {
+    const axis = joint.bodyA.getWorldVector(localAxis);
+    const vA = pointVelocity(joint.bodyA, joint.anchorB);
+    const vB = pointVelocity(joint.bodyB, joint.anchorB);
+    const across = Math.abs(-(vB.x - vA.x) * axis.y + (vB.y - vA.y) * axis.x);
+    return joint.type === 'prismatic' ? Math.max(across, turn) : across;
+  }
   const vA = pointVelocity(joint.bodyA, joint.anchorA);
   const vB = pointVelocity(joint.bodyB, joint.anchorB);
   const dx = vB.x - vA.x;
@@ -29,12 +42,13 @@ function violationSpeed(joint: Joint, length: number): number {
   }
   const point = Math.hypot(dx, dy);
   if (joint.type === 'revolute') return point;
-  return Math.max(point, length * Math.abs(joint.bodyB.angularVelocity - joint.bodyA.angularVelocity));
+  return Math.max(point, turn);
 }
 
 /**
  * A random forest of rigid joints between boxes of very different masses (1:1000) that do not
- * collide, each body joined to one earlier body by a hinge, a weld or a rod, or pinned to the ground.
+ * collide, each body joined to one earlier body (or to the ground) by a hinge, a weld, a rod, a
+ * prismatic slider or a wheel's axle (both free along their axis).
  */
 function randomForest(seed: number, grounded: boolean) {
   const rng = createRandom(seed);
@@ -42,7 +56,7 @@ function randomForest(seed: number, grounded: boolean) {
   const ground = world.createBody();
   const bodies: Body[] = [];
   const joints: Joint[] = [];
-  const kinds = ['revolute', 'weld', 'distance'] as const;
+  const kinds = ['revolute', 'weld', 'distance', 'prismatic', 'wheel'] as const;
   for (let i = 0; i < 40; i++) {
     const body = world.createBody({
       type: 'dynamic',
@@ -61,7 +75,7 @@ function randomForest(seed: number, grounded: boolean) {
       bodies.push(body);
       continue;
     }
-    const kind = kinds[rng.int(3)];
+    const kind = kinds[rng.int(kinds.length)];
     const p = body.position;
     const q = other === ground ? { x: p.x + rng.range(-1, 1), y: p.y + rng.range(-1, 1) } : other.position;
     const anchor = {
@@ -78,6 +92,12 @@ function randomForest(seed: number, grounded: boolean) {
           localAnchorB: body.getLocalPoint(p),
         }),
       );
+    } else if (kind === 'prismatic' || kind === 'wheel') {
+      const a = rng.range(-Math.PI, Math.PI);
+      const axis = { x: Math.cos(a), y: Math.sin(a) };
+      const joint = world.createJoint({ type: kind, bodyA: other, bodyB: body, anchor, axis });
+      localAxes.set(joint, other.getLocalVector(axis));
+      joints.push(joint);
     } else {
       joints.push(world.createJoint({ type: kind, bodyA: other, bodyB: body, anchor }));
     }
@@ -98,7 +118,7 @@ function momentum(bodies: Body[]) {
 }
 
 describe('joint tree', () => {
-  it('free random forests of hinges, welds and rods: no joint drifts apart; momentum is conserved', () => {
+  it('free random forests of hinges, welds, rods and sliders: no joint drifts apart; momentum is conserved', () => {
     for (const seed of [1, 2, 3]) {
       const { world, bodies, joints } = randomForest(seed, false);
       const before = momentum(bodies);

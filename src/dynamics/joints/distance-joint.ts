@@ -105,6 +105,11 @@ export class DistanceJoint extends Joint {
     return !this.o.enableSpring || this.o.minLength === this.o.maxLength;
   }
 
+  /** @internal */
+  override canCloseLoop(): boolean {
+    return true;
+  }
+
   /** @internal the rod's row */
   override treeRows(): number {
     return this.isRigid() ? 1 : 0;

@@ -195,7 +195,7 @@ export class JointTree {
       const ra = this.find(dynA ? a : ground);
       const rb = this.find(dynB ? b : ground);
       if (ra === rb) {
-        if (joint.treeRows() <= 2 && this.closures.length < MAX_CLOSURES) {
+        if (joint.canCloseLoop() && this.closures.length < MAX_CLOSURES) {
           joint.closure = true;
           this.closures.push(joint);
         }

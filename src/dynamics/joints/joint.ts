@@ -169,6 +169,14 @@ export abstract class Joint {
     return false;
   }
 
+  /**
+   * @internal Whether, when it would close a loop of the tree, solve() can act through the tree
+   * (JointTree closures); joints that cannot stay plain Gauss-Seidel then.
+   */
+  canCloseLoop(): boolean {
+    return false;
+  }
+
   /** @internal Whether solve() has rows to iterate while the tree solver owns the rigid ones. */
   iteratesInTree(): boolean {
     return false;

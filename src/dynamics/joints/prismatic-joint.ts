@@ -66,6 +66,41 @@ export class PrismaticJoint extends SliderJoint {
   }
 
   /** @internal */
+  protected hasMotor(): boolean {
+    return this.o.enableMotor;
+  }
+
+  /** @internal the perpendicular and angular rows */
+  override treeRows(): number {
+    return 2;
+  }
+
+  /** @internal */
+  override treeFill(
+    state: Float64Array,
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+  ): void {
+    this.updateAxis(state);
+    this.fillPerpRow(jA, jB, err, j, 0);
+    const m = 9 * j + 3;
+    jA[m + 2] = -1;
+    jB[m + 2] = 1;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    err[3 * j + 1] =
+      this.angle0 + relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+  }
+
+  /** @internal */
+  override treeAddImpulse(solution: Float64Array, o: number): void {
+    this.perpImpulse -= solution[o];
+    this.angularImpulse -= solution[o + 1];
+  }
+
+  /** @internal */
   prepare(ctx: JointContext): void {
     this.prepareSlider(ctx);
     this.angle0 =
@@ -98,7 +133,7 @@ export class PrismaticJoint extends SliderJoint {
     this.solveSlider(ctx, useBias);
     // no rotation relative to A
     const k = this.iA + this.iB;
-    if (k > 0) {
+    if (k > 0 && !this.inTree) {
       const sa = this.a * STATE_STRIDE;
       const sb = this.b * STATE_STRIDE;
       let bias = 0;

@@ -136,6 +136,11 @@ export class RevoluteJoint extends Joint {
     return this.o.enableLimit || this.o.enableMotor || this.o.enableSpring;
   }
 
+  /** @internal */
+  override canCloseLoop(): boolean {
+    return true;
+  }
+
   /** @internal the point rows */
   override treeRows(): number {
     return 2;

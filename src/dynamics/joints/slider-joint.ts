@@ -166,6 +166,38 @@ export abstract class SliderJoint extends Joint {
     state[sb + S_W] += this.iB * impulse * s2;
   }
 
+  /** @internal the rows along the axis (spring, limits, and the subclass's motor) */
+  override iteratesInTree(): boolean {
+    return this.s.enableSpring || this.s.enableLimit || this.hasMotor();
+  }
+
+  /** Whether the subclass's motor is on. */
+  protected abstract hasMotor(): boolean;
+
+  /**
+   * Writes the perpendicular row (no motion of B's anchor across the axis) as row `row` of tree joint
+   * `j`, and zeros the rows after it; anchors and axis must be current (updateAxis).
+   */
+  protected fillPerpRow(jA: Float64Array, jB: Float64Array, err: Float64Array, j: number, row: number): void {
+    const px = -this.uy;
+    const py = this.ux;
+    const dx = this.sepX + this.rAx;
+    const dy = this.sepY + this.rAy;
+    const m = 9 * j + 3 * row;
+    jA[m] = -px;
+    jA[m + 1] = -py;
+    jA[m + 2] = -(dx * py - dy * px);
+    jB[m] = px;
+    jB[m + 1] = py;
+    jB[m + 2] = this.rBx * py - this.rBy * px;
+    for (let c = m + 3; c < 9 * j + 9; c++) {
+      jA[c] = 0;
+      jB[c] = 0;
+    }
+    err[3 * j + row] = this.sepX * px + this.sepY * py;
+    for (let r = row + 1; r < 3; r++) err[3 * j + r] = 0;
+  }
+
   /** Warm starts the slider's own impulses (axial, perpendicular). */
   protected warmStartSlider(state: Float64Array): void {
     this.updateAxis(state);
@@ -173,7 +205,7 @@ export abstract class SliderJoint extends Joint {
     this.applyPerp(state, this.perpImpulse);
   }
 
-  /** Spring and limits along the axis, then the perpendicular constraint. */
+  /** Spring and limits along the axis, then the perpendicular constraint unless the tree owns it. */
   protected solveSlider(ctx: JointContext, useBias: boolean): void {
     const state = ctx.state;
     const o = this.s;
@@ -211,6 +243,7 @@ export abstract class SliderJoint extends Joint {
         this.applyAxial(state, sign * (next - old));
       }
     }
+    if (this.inTree) return;
     // no motion across the axis
     const px = -this.uy;
     const py = this.ux;

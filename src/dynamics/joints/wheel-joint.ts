@@ -66,6 +66,38 @@ export class WheelJoint extends SliderJoint {
   }
 
   /** @internal */
+  protected hasMotor(): boolean {
+    return this.o.enableMotor;
+  }
+
+  /** @internal the motor turns the wheel relative to A: its mass through the tree (see JointTree) */
+  override hasAxialRow(): boolean {
+    return this.o.enableMotor;
+  }
+
+  /** @internal the perpendicular row */
+  override treeRows(): number {
+    return 1;
+  }
+
+  /** @internal */
+  override treeFill(
+    state: Float64Array,
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+  ): void {
+    this.updateAxis(state);
+    this.fillPerpRow(jA, jB, err, j, 0);
+  }
+
+  /** @internal */
+  override treeAddImpulse(solution: Float64Array, o: number): void {
+    this.perpImpulse -= solution[o];
+  }
+
+  /** @internal */
   prepare(ctx: JointContext): void {
     this.prepareSlider(ctx);
     if (!this.o.enableMotor) this.motorImpulse = 0;
@@ -89,9 +121,10 @@ export class WheelJoint extends SliderJoint {
       const sb = this.b * STATE_STRIDE;
       const max = o.maxMotorTorque * ctx.h;
       const old = this.motorImpulse;
+      const mass = this.treeAxialMass > 0 ? this.treeAxialMass : 1 / k;
       this.motorImpulse = Math.max(
         -max,
-        Math.min(old - (state[sb + S_W] - state[sa + S_W] - o.motorSpeed) / k, max),
+        Math.min(old - mass * (state[sb + S_W] - state[sa + S_W] - o.motorSpeed), max),
       );
       const impulse = this.motorImpulse - old;
       state[sa + S_W] -= this.iA * impulse;
