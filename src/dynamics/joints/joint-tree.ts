@@ -45,7 +45,7 @@ const MAX_LOOPS = 8;
  */
 export const CLOSURE_REGULARIZATION = 0.05;
 
-/** tree hinges whose limit or motor row gets its effective mass through the tree (one solve each) */
+/** tree joints whose limit or motor row gets its effective mass through the tree (one solve each) */
 const MAX_AXIALS = 16;
 
 /** rows and columns of a node block: a body's 3 plus up to 3 rows of a grounded joint */
@@ -90,6 +90,9 @@ export class JointTree {
    * not about its centre of mass).
    */
   readonly axials: Joint[] = [];
+  /** an axial row's Jacobian blocks at A and B (see Joint.axialJacobian) */
+  private readonly axialJA = new Float64Array(3);
+  private readonly axialJB = new Float64Array(3);
   private axialNodeA = new Int32Array(MAX_AXIALS);
   private axialNodeB = new Int32Array(MAX_AXIALS);
   /** per tree joint: the node holding its rows, the first of them there, and its bodies' nodes */
@@ -492,22 +495,32 @@ export class JointTree {
   factor(ctx: JointContext): void {
     this.factorTree(ctx);
     if (this.closures.length > 0) this.closureMasses(ctx);
-    if (this.axials.length > 0) this.axialMasses();
+    if (this.axials.length > 0) this.axialMasses(ctx.state);
   }
 
-  /** The angular mass of each axial row through the tree: response to a unit torque pair. */
-  private axialMasses(): void {
+  /**
+   * The effective mass of each axial row through the tree: the row's velocity response to a unit
+   * impulse on it (J P M⁻¹ Jᵀ), inverted.
+   */
+  private axialMasses(state: Float64Array): void {
     const x = this.x;
+    const jA = this.axialJA;
+    const jB = this.axialJB;
     for (let i = 0; i < this.axials.length; i++) {
       const nodeA = this.axialNodeA[i];
       const nodeB = this.axialNodeB[i];
+      this.axials[i].axialJacobian(state, jA, jB);
       x.fill(0, 0, S * this.nodeCount);
-      if (nodeA !== -1) x[S * nodeA + 2] = -1;
-      if (nodeB !== -1) x[S * nodeB + 2] = 1;
+      for (let c = 0; c < 3; c++) {
+        if (nodeA !== -1) x[S * nodeA + c] = jA[c];
+        if (nodeB !== -1) x[S * nodeB + c] = jB[c];
+      }
       this.substitute();
       let k = 0;
-      if (nodeA !== -1) k -= x[S * nodeA + 2];
-      if (nodeB !== -1) k += x[S * nodeB + 2];
+      for (let c = 0; c < 3; c++) {
+        if (nodeA !== -1) k += jA[c] * x[S * nodeA + c];
+        if (nodeB !== -1) k += jB[c] * x[S * nodeB + c];
+      }
       this.axials[i].treeAxialMass = k > 0 ? 1 / k : 0;
     }
   }

@@ -164,9 +164,22 @@ export abstract class Joint {
   /** @internal angular mass of the joint's limit and motor row through the tree (0 = its own) */
   treeAxialMass = 0;
 
-  /** @internal Whether the joint has an angular limit or motor row that the tree should weigh. */
+  /** @internal Whether the joint has a limit or motor row that the tree should weigh. */
   hasAxialRow(): boolean {
     return false;
+  }
+
+  /**
+   * @internal The Jacobian blocks (3 each) at A and B of that row, at the current positions: by
+   * default the relative rotation of B to A.
+   */
+  axialJacobian(_state: Float64Array, jA: Float64Array, jB: Float64Array): void {
+    jA[0] = 0;
+    jA[1] = 0;
+    jA[2] = -1;
+    jB[0] = 0;
+    jB[1] = 0;
+    jB[2] = 1;
   }
 
   /**

@@ -70,6 +70,27 @@ export class PrismaticJoint extends SliderJoint {
     return this.o.enableMotor;
   }
 
+  /** @internal the motor and the limits push along the axis: their mass through the tree */
+  override hasAxialRow(): boolean {
+    return this.o.enableMotor || this.s.enableLimit;
+  }
+
+  /** @internal the row along the axis */
+  override axialJacobian(state: Float64Array, jA: Float64Array, jB: Float64Array): void {
+    this.updateAxis(state);
+    jA[0] = -this.ux;
+    jA[1] = -this.uy;
+    jA[2] = -this.a1;
+    jB[0] = this.ux;
+    jB[1] = this.uy;
+    jB[2] = this.a2;
+  }
+
+  /** @internal */
+  protected override axisRowMass(): number {
+    return this.treeAxialMass > 0 ? this.treeAxialMass : this.axialMass;
+  }
+
   /** @internal the perpendicular and angular rows */
   override treeRows(): number {
     return 2;
@@ -126,7 +147,7 @@ export class PrismaticJoint extends SliderJoint {
       const old = this.axialImpulse;
       this.axialImpulse = Math.max(
         -max,
-        Math.min(old - this.axialMass * (this.axialSpeed(state) - o.motorSpeed), max),
+        Math.min(old - this.axisRowMass() * (this.axialSpeed(state) - o.motorSpeed), max),
       );
       this.applyAxial(state, this.axialImpulse - old);
     }

@@ -171,6 +171,11 @@ export abstract class SliderJoint extends Joint {
     return this.s.enableSpring || this.s.enableLimit || this.hasMotor();
   }
 
+  /** The effective mass of the rows along the axis (limits, and a prismatic motor). */
+  protected axisRowMass(): number {
+    return this.axialMass;
+  }
+
   /** Whether the subclass's motor is on. */
   protected abstract hasMotor(): boolean;
 
@@ -235,7 +240,7 @@ export abstract class SliderJoint extends Joint {
         }
         const old = side === 0 ? this.lowerImpulse : this.upperImpulse;
         const next = Math.max(
-          old - massScale * this.axialMass * (sign * this.axialSpeed(state) + bias) - impulseScale * old,
+          old - massScale * this.axisRowMass() * (sign * this.axialSpeed(state) + bias) - impulseScale * old,
           0,
         );
         if (side === 0) this.lowerImpulse = next;
