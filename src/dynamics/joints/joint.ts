@@ -4,6 +4,7 @@ import type { Body } from '../body';
 import { S_DPX, S_DPY, S_DQC, S_DQS, STATE_STRIDE } from '../body-store';
 import type { World } from '../world';
 import type { JointContext } from './joint-context';
+import { relativeAngle } from './joint-math';
 
 export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'mouse' | 'motor';
 
@@ -217,6 +218,32 @@ export abstract class Joint {
    * multipliers; an array and an index, as doubles passed to a call would be boxed).
    */
   treeAddImpulse(_solution: Float64Array, _o: number): void {}
+
+  /**
+   * Writes the angular row (B keeps its angle to A) as row `row` of tree joint `j`: its error is
+   * `angle0`, the angle error at the step's start, plus the bodies' turn since.
+   */
+  protected fillAngleRow(
+    state: Float64Array,
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+    row: number,
+    angle0: number,
+  ): void {
+    const m = 9 * j + 3 * row;
+    jA[m] = 0;
+    jA[m + 1] = 0;
+    jA[m + 2] = -1;
+    jB[m] = 0;
+    jB[m + 1] = 0;
+    jB[m + 2] = 1;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    err[3 * j + row] =
+      angle0 + relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+  }
 
   /** Writes the two point rows (anchor B minus anchor A) of tree joint `j`; anchors must be current. */
   protected fillPointRows(jA: Float64Array, jB: Float64Array, err: Float64Array, j: number): void {

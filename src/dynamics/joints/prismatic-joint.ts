@@ -106,13 +106,7 @@ export class PrismaticJoint extends SliderJoint {
   ): void {
     this.updateAxis(state);
     this.fillPerpRow(jA, jB, err, j, 0);
-    const m = 9 * j + 3;
-    jA[m + 2] = -1;
-    jB[m + 2] = 1;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    err[3 * j + 1] =
-      this.angle0 + relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+    this.fillAngleRow(state, jA, jB, err, j, 1, this.angle0);
   }
 
   /** @internal */

@@ -83,17 +83,7 @@ export class WeldJoint extends Joint {
   ): void {
     this.updateAnchors(state);
     this.fillPointRows(jA, jB, err, j);
-    const m = 9 * j + 6;
-    jA[m] = 0;
-    jA[m + 1] = 0;
-    jA[m + 2] = -1;
-    jB[m] = 0;
-    jB[m + 1] = 0;
-    jB[m + 2] = 1;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    err[3 * j + 2] =
-      this.angle0 + relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+    this.fillAngleRow(state, jA, jB, err, j, 2, this.angle0);
   }
 
   /** @internal */
