@@ -7,6 +7,7 @@ import { chainBridgeDemo } from './demos/chain-bridge';
 import { clothDemo } from './demos/cloth';
 import { filteringDemo } from './demos/filtering';
 import { golfDemo } from './demos/golf';
+import { heavyLoadsDemo } from './demos/heavy-loads';
 import { newtonsCradleDemo } from './demos/newtons-cradle';
 import { pixiDemo } from './demos/pixi';
 import { planetsDemo } from './demos/planets';
@@ -24,6 +25,7 @@ export const demos: readonly Demo[] = [
   slingshotDemo,
   newtonsCradleDemo,
   chainBridgeDemo,
+  heavyLoadsDemo,
   ragdollsDemo,
   carDemo,
   clothDemo,
