@@ -1,5 +1,11 @@
 import { growI32 } from '../core/grow';
-import { CONTACT_DAMPING_RATIO, CONTACT_HERTZ, JOINT_DAMPING_RATIO, JOINT_HERTZ } from '../core/settings';
+import {
+  CONTACT_DAMPING_RATIO,
+  CONTACT_HERTZ,
+  JOINT_DAMPING_RATIO,
+  JOINT_HERTZ,
+  MAX_ROTATION_PER_SUBSTEP,
+} from '../core/settings';
 import { integratePositions, integrateVelocities } from './body-solver';
 import {
   DYNAMIC,
@@ -62,6 +68,8 @@ function prepareJoints(core: WorldCore, h: number): Joint[] {
   ctx.lcy = bodies.lcy;
   ctx.h = h;
   ctx.invH = 1 / h;
+  ctx.warmSpeedLimit = 2 * core.settings.maxLinearSpeed;
+  ctx.warmTurnLimit = (2 * MAX_ROTATION_PER_SUBSTEP) / h;
   makeSoftness(JOINT_HERTZ, JOINT_DAMPING_RATIO, h, ctx.jointSoftness);
   const active = core.activeJoints;
   active.length = 0;
@@ -136,7 +144,7 @@ export function solve(core: WorldCore, dt: number): void {
   const coupled = tree.isCoupled(cc.ids, cc.count);
   for (let i = 0; i < subSteps; i++) {
     integrateVelocities(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, settings.maxLinearSpeed);
-    for (let j = 0; j < jointCount; j++) joints[j].warmStart(ctx);
+    for (let j = 0; j < jointCount; j++) joints[j].warmStartGuarded(ctx);
     warmStartContacts(cc, state);
     // positions change only in integratePositions: the last substep's relax factorization still holds
     if (i === 0) tree.factor(ctx);

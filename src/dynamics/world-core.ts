@@ -87,6 +87,8 @@ export class WorldCore {
     lcy: new Float64Array(0),
     h: 0,
     invH: 0,
+    warmSpeedLimit: 0,
+    warmTurnLimit: 0,
     jointSoftness: { biasRate: 0, massScale: 1, impulseScale: 0 },
     tree: this.jointTree,
   };

@@ -180,6 +180,13 @@ export class DistanceJoint extends Joint {
   }
 
   /** @internal */
+  forgetImpulses(): void {
+    this.impulse = 0;
+    this.lowerImpulse = 0;
+    this.upperImpulse = 0;
+  }
+
+  /** @internal */
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.updateAnchors(state);

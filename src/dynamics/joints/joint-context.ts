@@ -16,6 +16,9 @@ export interface JointContext {
   lcy: Float64Array;
   h: number;
   invH: number;
+  /** speeds no warm start may throw a body past (linear, angular): twice the step's limits */
+  warmSpeedLimit: number;
+  warmTurnLimit: number;
   /** softness of rigid joints' position correction */
   jointSoftness: Softness;
   /** the exact solver of tree-shaped joints (closures apply their impulses through it) */

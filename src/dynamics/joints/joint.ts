@@ -1,7 +1,7 @@
 import { FulcrumError } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_DPX, S_DPY, S_DQC, S_DQS, STATE_STRIDE } from '../body-store';
+import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
 import type { World } from '../world';
 import type { JointContext } from './joint-context';
 import { relativeAngle } from './joint-math';
@@ -274,6 +274,49 @@ export abstract class Joint {
   abstract prepare(ctx: JointContext): void;
   /** @internal */
   abstract warmStart(ctx: JointContext): void;
+  /** @internal Sets the accumulated impulses to zero: the next warm start starts from nothing. */
+  abstract forgetImpulses(): void;
+
+  /**
+   * @internal Warm starts, unless that would throw a body past twice the speed limits: then the
+   * velocities stay as they were and the impulses are forgotten. Only constraints that cannot all
+   * hold and have torn apart (a network of hinges locked against itself) accumulate impulses like
+   * that: they grew ×55 per step until they overflowed and turned the island to NaN.
+   */
+  warmStartGuarded(ctx: JointContext): void {
+    const state = ctx.state;
+    const sa = this.a * STATE_STRIDE;
+    const sb = this.b * STATE_STRIDE;
+    const vAx = state[sa + S_VX];
+    const vAy = state[sa + S_VY];
+    const wA = state[sa + S_W];
+    const vBx = state[sb + S_VX];
+    const vBy = state[sb + S_VY];
+    const wB = state[sb + S_W];
+    this.warmStart(ctx);
+    const v2 = ctx.warmSpeedLimit * ctx.warmSpeedLimit;
+    const w = ctx.warmTurnLimit;
+    const nAx = state[sa + S_VX];
+    const nAy = state[sa + S_VY];
+    const nBx = state[sb + S_VX];
+    const nBy = state[sb + S_VY];
+    // written so that NaN fails the test too
+    if (
+      nAx * nAx + nAy * nAy <= v2 &&
+      nBx * nBx + nBy * nBy <= v2 &&
+      Math.abs(state[sa + S_W]) <= w &&
+      Math.abs(state[sb + S_W]) <= w
+    ) {
+      return;
+    }
+    state[sa + S_VX] = vAx;
+    state[sa + S_VY] = vAy;
+    state[sa + S_W] = wA;
+    state[sb + S_VX] = vBx;
+    state[sb + S_VY] = vBy;
+    state[sb + S_W] = wB;
+    this.forgetImpulses();
+  }
   /** @internal */
   abstract solve(ctx: JointContext, useBias: boolean): void;
 }

@@ -98,6 +98,13 @@ export class MotorJoint extends Joint {
   }
 
   /** @internal */
+  forgetImpulses(): void {
+    this.linearX = 0;
+    this.linearY = 0;
+    this.angularImpulse = 0;
+  }
+
+  /** @internal */
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     const sa = this.a * STATE_STRIDE;

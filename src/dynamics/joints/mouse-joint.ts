@@ -72,6 +72,12 @@ export class MouseJoint extends Joint {
   }
 
   /** @internal */
+  forgetImpulses(): void {
+    this.impulseX = 0;
+    this.impulseY = 0;
+  }
+
+  /** @internal */
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.updateAnchors(state);

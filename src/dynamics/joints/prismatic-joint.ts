@@ -124,6 +124,12 @@ export class PrismaticJoint extends SliderJoint {
   }
 
   /** @internal */
+  forgetImpulses(): void {
+    this.forgetSliderImpulses();
+    this.angularImpulse = 0;
+  }
+
+  /** @internal */
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.warmStartSlider(state);

@@ -183,6 +183,16 @@ export class RevoluteJoint extends Joint {
   }
 
   /** @internal */
+  forgetImpulses(): void {
+    this.linearX = 0;
+    this.linearY = 0;
+    this.springImpulse = 0;
+    this.motorImpulse = 0;
+    this.lowerImpulse = 0;
+    this.upperImpulse = 0;
+  }
+
+  /** @internal */
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.updateAnchors(state);

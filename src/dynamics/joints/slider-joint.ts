@@ -203,6 +203,15 @@ export abstract class SliderJoint extends Joint {
     for (let r = row + 1; r < 3; r++) err[3 * j + r] = 0;
   }
 
+  /** Forgets the slider's own impulses (axial, perpendicular). */
+  protected forgetSliderImpulses(): void {
+    this.perpImpulse = 0;
+    this.springImpulse = 0;
+    this.lowerImpulse = 0;
+    this.upperImpulse = 0;
+    this.axialImpulse = 0;
+  }
+
   /** Warm starts the slider's own impulses (axial, perpendicular). */
   protected warmStartSlider(state: Float64Array): void {
     this.updateAxis(state);

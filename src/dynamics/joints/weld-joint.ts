@@ -109,6 +109,13 @@ export class WeldJoint extends Joint {
   }
 
   /** @internal */
+  forgetImpulses(): void {
+    this.linearX = 0;
+    this.linearY = 0;
+    this.angularImpulse = 0;
+  }
+
+  /** @internal */
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.updateAnchors(state);

@@ -104,6 +104,12 @@ export class WheelJoint extends SliderJoint {
   }
 
   /** @internal */
+  forgetImpulses(): void {
+    this.forgetSliderImpulses();
+    this.motorImpulse = 0;
+  }
+
+  /** @internal */
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.warmStartSlider(state);
