@@ -139,14 +139,8 @@ export class DistanceJoint extends Joint {
     jB[m] = ux;
     jB[m + 1] = uy;
     jB[m + 2] = this.rBx * uy - this.rBy * ux;
-    // rows 1 and 2 are zero (the tree works in blocks of three rows)
-    for (let c = 3; c < 9; c++) {
-      jA[m + c] = 0;
-      jB[m + c] = 0;
-    }
     err[3 * j] = length - this.o.length;
-    err[3 * j + 1] = 0;
-    err[3 * j + 2] = 0;
+    this.clearTreeRows(jA, jB, err, j, 1);
   }
 
   /** @internal */

@@ -121,10 +121,6 @@ export class JointTree {
   private activeA = new Int32Array(16);
   private activeB = new Int32Array(16);
   private activeEligible = new Uint8Array(16);
-  /** per body slot: 1 for the dynamic bodies of tree joints (cleared at the next build) */
-  private inTreeBody = new Uint8Array(64);
-  private marked = new Int32Array(32);
-  private markedCount = 0;
   /** per body slot: union-find parent and its node */
   private root = new Int32Array(64);
   /** per body slot: cluster union-find (not through the ground); at a root, its loops and ground */
@@ -132,7 +128,8 @@ export class JointTree {
   private loops = new Int32Array(64);
   private clusterGrounded = new Uint8Array(64);
   private counted = new Uint8Array(64);
-  private bodyNode = new Int32Array(64);
+  /** per body slot: its node in the last build's tree, or -1 (valid until the next build) */
+  private bodyNode = new Int32Array(64).fill(-1);
   /** adjacency of the forest as linked lists of edges */
   private adjHead = new Int32Array(32);
   private adjNext = new Int32Array(64);
@@ -150,11 +147,12 @@ export class JointTree {
       this.loops = growI32(this.loops, kind.length);
       this.clusterGrounded = growU8(this.clusterGrounded, kind.length);
       this.counted = growU8(this.counted, kind.length);
-      this.bodyNode = growI32(this.bodyNode, kind.length);
-      this.inTreeBody = growU8(this.inTreeBody, kind.length);
+      this.bodyNode = growI32(this.bodyNode, kind.length, -1);
     }
-    for (let i = 0; i < this.markedCount; i++) this.inTreeBody[this.marked[i]] = 0;
-    this.markedCount = 0;
+    // the last build's bodies leave the tree
+    for (let n = 0; n < this.nodeCount; n++)
+      if (this.nodeKind[n] === BODY) this.bodyNode[this.nodeBody[n]] = -1;
+    this.nodeCount = 0;
     this.joints.length = 0;
     this.closures.length = 0;
     this.axials.length = 0;
@@ -229,10 +227,6 @@ export class JointTree {
       this.closureNodeA[c] = this.bodyNode[this.closures[c].bodyA.slot];
       this.closureNodeB[c] = this.bodyNode[this.closures[c].bodyB.slot];
     }
-    for (let j = 0; j < active.length; j++) {
-      this.bodyNode[active[j].bodyA.slot] = -1;
-      this.bodyNode[active[j].bodyB.slot] = -1;
-    }
   }
 
   /**
@@ -299,7 +293,6 @@ export class JointTree {
     this.clusterGrounded[b] = 0;
     this.counted[b] = 0;
     this.root[b] = b;
-    this.bodyNode[b] = -1;
   }
 
   private find(b: number): number {
@@ -319,7 +312,6 @@ export class JointTree {
       const cap = Math.max(2 * this.rows.length, count);
       this.rows = growI32(this.rows, cap);
       this.slotA = growI32(this.slotA, cap);
-      this.marked = growI32(this.marked, 2 * cap);
       this.slotB = growI32(this.slotB, cap);
       this.rowNode = growI32(this.rowNode, cap);
       this.rowOffset = growI32(this.rowOffset, cap);
@@ -360,8 +352,6 @@ export class JointTree {
     const node = this.bodyNode[b];
     if (node !== -1) return node;
     this.bodyNode[b] = nodes;
-    this.inTreeBody[b] = 1;
-    this.marked[this.markedCount++] = b;
     this.nodeKind[nodes] = BODY;
     this.nodeDim[nodes] = 3;
     this.nodeBody[nodes] = b;
@@ -477,13 +467,13 @@ export class JointTree {
    */
   isCoupled(ids: Int32Array, count: number): boolean {
     if (this.jointCount === 0) return false;
-    const marks = this.inTreeBody;
+    const bodyNode = this.bodyNode;
     for (let i = 0; i < count; i++) {
-      if (marks[ids[3 * i]] !== 0 || marks[ids[3 * i + 1]] !== 0) return true;
+      if (bodyNode[ids[3 * i]] !== -1 || bodyNode[ids[3 * i + 1]] !== -1) return true;
     }
     for (let j = 0; j < this.iterative.length; j++) {
       const joint = this.iterative[j];
-      if (marks[joint.bodyA.slot] !== 0 || marks[joint.bodyB.slot] !== 0) return true;
+      if (bodyNode[joint.bodyA.slot] !== -1 || bodyNode[joint.bodyB.slot] !== -1) return true;
     }
     return false;
   }
@@ -744,7 +734,7 @@ export class JointTree {
       const vBx = state[sb + S_VX];
       const vBy = state[sb + S_VY];
       const wB = state[sb + S_W];
-      // three rows each: a joint with two has a zero third row (see fillPointRows)
+      // three rows each: a joint with fewer has zero rows after its own (see Joint.clearTreeRows)
       const o = S * this.rowNode[j] + this.rowOffset[j];
       const m = 9 * j;
       const e = 3 * j;

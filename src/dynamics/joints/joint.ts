@@ -260,14 +260,28 @@ export abstract class Joint {
     jB[m + 3] = 0;
     jB[m + 4] = 1;
     jB[m + 5] = this.rBx;
-    // a third row of zeros, which a weld overwrites with its angular row
-    for (let c = 6; c < 9; c++) {
-      jA[m + c] = 0;
-      jB[m + c] = 0;
-    }
     err[3 * j] = this.sepX;
     err[3 * j + 1] = this.sepY;
-    err[3 * j + 2] = 0;
+    // a third row of zeros, which a weld overwrites with its angular row
+    this.clearTreeRows(jA, jB, err, j, 2);
+  }
+
+  /**
+   * Zeros rows `first`..2 of tree joint `j`: the tree works in blocks of three rows, and a joint with
+   * fewer leaves the rest empty.
+   */
+  protected clearTreeRows(
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+    first: number,
+  ): void {
+    for (let c = 9 * j + 3 * first; c < 9 * j + 9; c++) {
+      jA[c] = 0;
+      jB[c] = 0;
+    }
+    for (let r = first; r < 3; r++) err[3 * j + r] = 0;
   }
 
   /** @internal */

@@ -195,12 +195,8 @@ export abstract class SliderJoint extends Joint {
     jB[m] = px;
     jB[m + 1] = py;
     jB[m + 2] = this.rBx * py - this.rBy * px;
-    for (let c = m + 3; c < 9 * j + 9; c++) {
-      jA[c] = 0;
-      jB[c] = 0;
-    }
     err[3 * j + row] = this.sepX * px + this.sepY * py;
-    for (let r = row + 1; r < 3; r++) err[3 * j + r] = 0;
+    this.clearTreeRows(jA, jB, err, j, row + 1);
   }
 
   /** Forgets the slider's own impulses (axial, perpendicular). */
