@@ -1,5 +1,6 @@
 import { growF64, growI32, growU8, growU32 } from '../core/grow';
 import { SlotStore } from '../core/slot-store';
+import { PACK_STRIDE } from '../geometry/packed';
 import type { Geometry } from '../geometry/types';
 
 export const SHAPE_SENSOR = 1;
@@ -29,6 +30,8 @@ export class ShapeStore extends SlotStore {
   maxX = new Float64Array(0);
   maxY = new Float64Array(0);
   geometry: (Geometry | undefined)[] = [];
+  /** each shape's geometry packed (see packed.ts), PACK_STRIDE doubles per slot */
+  packed = new Float64Array(0);
 
   protected growColumns(capacity: number): void {
     this.body = growI32(this.body, capacity);
@@ -47,6 +50,7 @@ export class ShapeStore extends SlotStore {
     this.minY = growF64(this.minY, capacity);
     this.maxX = growF64(this.maxX, capacity);
     this.maxY = growF64(this.maxY, capacity);
+    this.packed = growF64(this.packed, capacity * PACK_STRIDE);
   }
 
   protected resetSlot(slot: number): void {

@@ -2,9 +2,10 @@ import { BroadPhase, DYNAMIC_PROXY, KINEMATIC_PROXY, STATIC_PROXY } from '../col
 import { IntList } from '../collision/int-list';
 import { PairSet } from '../collision/pair-set';
 import { makeSettings, type Settings } from '../core/settings';
-import { computeShapeBounds } from '../geometry/bounds';
+import { packedBounds } from '../geometry/bounds';
 import { maxExtentFrom, minExtent } from '../geometry/extent';
 import { computeMass } from '../geometry/mass';
+import { PACK_STRIDE } from '../geometry/packed';
 import type { MassData } from '../geometry/types';
 import type { Bounds } from '../math/aabb';
 import { makeBounds } from '../math/aabb';
@@ -112,9 +113,15 @@ export class WorldCore {
   /** Refreshes the tight AABB of a shape from its body's transform. */
   refreshShapeBounds(shape: number): void {
     const shapes = this.shapes;
-    computeShapeBounds(
-      shapes.geometry[shape]!,
-      this.fillTransform(shapes.body[shape], this.xfA),
+    const bodies = this.bodies;
+    const b = shapes.body[shape];
+    packedBounds(
+      shapes.packed,
+      shape * PACK_STRIDE,
+      bodies.qc[b],
+      bodies.qs[b],
+      bodies.px[b],
+      bodies.py[b],
       boundsScratch,
     );
     shapes.minX[shape] = boundsScratch.minX;

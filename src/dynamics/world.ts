@@ -10,6 +10,7 @@ import {
   fail,
 } from '../core/errors';
 import { readSnapshot, writeSnapshot } from '../debug/snapshot';
+import { PACK_STRIDE, packGeometry } from '../geometry/packed';
 import { type Geometry, isGeometry, SEGMENT } from '../geometry/types';
 import type { AABB } from '../math/aabb';
 import { makeRotInto } from '../math/rot';
@@ -358,6 +359,7 @@ export class World {
     const s = shapes.allocate();
     shapes.body[s] = b;
     shapes.geometry[s] = geometry;
+    packGeometry(geometry, shapes.packed, s * PACK_STRIDE);
     shapes.kind[s] = geometry.kind;
     shapes.flags[s] = d.flags;
     shapes.density[s] = d.density;

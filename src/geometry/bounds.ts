@@ -1,51 +1,56 @@
 import type { Bounds } from '../math/aabb';
 import type { Transform } from '../math/vec2';
-import { CAPSULE, CIRCLE, type Geometry, POLYGON } from './types';
+import {
+  PACK_COUNT,
+  PACK_RADIUS,
+  PACK_STRIDE,
+  PACK_VERTEX_STRIDE,
+  PACK_VERTICES,
+  packGeometry,
+} from './packed';
+import type { Geometry } from './types';
+
+/**
+ * Tight world AABB of the packed shape at `base` (see packed.ts) placed at rotation (c, s) and
+ * position (px, py): its vertices' box grown by its radius. Circles, capsules, segments and polygons
+ * alike.
+ */
+export function packedBounds(
+  data: Float64Array,
+  base: number,
+  c: number,
+  s: number,
+  px: number,
+  py: number,
+  out: Bounds,
+): void {
+  let minX = Number.POSITIVE_INFINITY;
+  let minY = Number.POSITIVE_INFINITY;
+  let maxX = Number.NEGATIVE_INFINITY;
+  let maxY = Number.NEGATIVE_INFINITY;
+  const n = data[base + PACK_COUNT];
+  for (let i = 0, k = base + PACK_VERTICES; i < n; i++, k += PACK_VERTEX_STRIDE) {
+    const vx = data[k];
+    const vy = data[k + 1];
+    const x = c * vx - s * vy;
+    const y = s * vx + c * vy;
+    minX = Math.min(minX, x);
+    minY = Math.min(minY, y);
+    maxX = Math.max(maxX, x);
+    maxY = Math.max(maxY, y);
+  }
+  const r = data[base + PACK_RADIUS];
+  out.minX = minX + px - r;
+  out.minY = minY + py - r;
+  out.maxX = maxX + px + r;
+  out.maxY = maxY + py + r;
+}
+
+const scratch = new Float64Array(PACK_STRIDE);
 
 /** Tight world AABB of `g` placed at `xf`, including its radius. */
 export function computeShapeBounds(g: Geometry, xf: Transform, out: Bounds): Bounds {
-  const { c, s } = xf.q;
-  const px = xf.p.x;
-  const py = xf.p.y;
-  if (g.kind === CIRCLE) {
-    const x = c * g.center.x - s * g.center.y + px;
-    const y = s * g.center.x + c * g.center.y + py;
-    out.minX = x - g.radius;
-    out.minY = y - g.radius;
-    out.maxX = x + g.radius;
-    out.maxY = y + g.radius;
-    return out;
-  }
-  if (g.kind === POLYGON) {
-    const v = g.vertices;
-    let minX = Number.POSITIVE_INFINITY;
-    let minY = Number.POSITIVE_INFINITY;
-    let maxX = Number.NEGATIVE_INFINITY;
-    let maxY = Number.NEGATIVE_INFINITY;
-    for (let i = 0; i < g.count; i++) {
-      const x = c * v[i].x - s * v[i].y;
-      const y = s * v[i].x + c * v[i].y;
-      minX = Math.min(minX, x);
-      minY = Math.min(minY, y);
-      maxX = Math.max(maxX, x);
-      maxY = Math.max(maxY, y);
-    }
-    out.minX = minX + px - g.radius;
-    out.minY = minY + py - g.radius;
-    out.maxX = maxX + px + g.radius;
-    out.maxY = maxY + py + g.radius;
-    return out;
-  }
-  const a = g.kind === CAPSULE ? g.center1 : g.point1;
-  const b = g.kind === CAPSULE ? g.center2 : g.point2;
-  const r = g.kind === CAPSULE ? g.radius : 0;
-  const ax = c * a.x - s * a.y + px;
-  const ay = s * a.x + c * a.y + py;
-  const bx = c * b.x - s * b.y + px;
-  const by = s * b.x + c * b.y + py;
-  out.minX = Math.min(ax, bx) - r;
-  out.minY = Math.min(ay, by) - r;
-  out.maxX = Math.max(ax, bx) + r;
-  out.maxY = Math.max(ay, by) + r;
+  packGeometry(g, scratch, 0);
+  packedBounds(scratch, 0, xf.q.c, xf.q.s, xf.p.x, xf.p.y, out);
   return out;
 }

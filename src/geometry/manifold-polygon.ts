@@ -1,5 +1,13 @@
 import type { Transform } from '../math/vec2';
 import { LINEAR_SLOP, REFERENCE_FACE_TOLERANCE } from './constants';
+import {
+  PACK_COUNT,
+  PACK_RADIUS,
+  PACK_STRIDE,
+  PACK_VERTEX_STRIDE,
+  PACK_VERTICES,
+  packGeometry,
+} from './packed';
 import { closestBetweenSegments, makeSegmentClosest } from './segment-distance';
 import { type Capsule, MAX_POLYGON_VERTICES, type Manifold, type Polygon, type Segment } from './types';
 
@@ -115,92 +123,67 @@ function edgeSeparation(p: WorkPolygon, i: number, q: WorkPolygon): void {
   separationOut[0] = min;
 }
 
-/** B's transform relative to A (q = qA^T qB, p = qA^T (pB - pA)): cos, sin, x, y; see setRelative. */
+/** B's transform relative to A (q = qA^T qB, p = qA^T (pB - pA)): cos, sin, x, y. */
 const relative = new Float64Array(4);
 
-function setRelative(xfA: Transform, xfB: Transform): void {
-  const qa = xfA.q;
-  const qb = xfB.q;
-  relative[0] = qa.c * qb.c + qa.s * qb.s;
-  relative[1] = qa.c * qb.s - qa.s * qb.c;
-  const dx = xfB.p.x - xfA.p.x;
-  const dy = xfB.p.y - xfA.p.y;
-  relative[2] = qa.c * dx + qa.s * dy;
-  relative[3] = -qa.s * dx + qa.c * dy;
+function setRelative(
+  ac: number,
+  as: number,
+  ax: number,
+  ay: number,
+  bc: number,
+  bs: number,
+  bx: number,
+  by: number,
+) {
+  relative[0] = ac * bc + as * bs;
+  relative[1] = ac * bs - as * bc;
+  const dx = bx - ax;
+  const dy = by - ay;
+  relative[2] = ac * dx + as * dy;
+  relative[3] = -as * dx + ac * dy;
 }
 
-/**
- * A's polygon as it is (A's frame is its body's frame). `+ 0` turns a -0 coordinate into +0, as the
- * identity transform of the other loaders does, so both paths give the same bits.
- */
-function loadPolygonA(g: Polygon): void {
-  const v = g.vertices;
-  const normals = g.normals;
+/** A's packed shape as it is (A's frame is its body's frame). */
+function loadPolygonA(data: Float64Array, base: number): void {
   const x = polyA.x;
   const y = polyA.y;
   const nx = polyA.nx;
   const ny = polyA.ny;
-  polyA.count = g.count;
-  polyA.radius = g.radius;
-  for (let i = 0, n = g.count; i < n; i++) {
-    const vi = v[i];
-    const ni = normals[i];
-    x[i] = vi.x + 0;
-    y[i] = vi.y + 0;
-    nx[i] = ni.x - 0 * ni.y;
-    ny[i] = 0 * ni.x + ni.y;
+  const n = data[base + PACK_COUNT];
+  polyA.count = n;
+  polyA.radius = data[base + PACK_RADIUS];
+  for (let i = 0, k = base + PACK_VERTICES; i < n; i++, k += PACK_VERTEX_STRIDE) {
+    x[i] = data[k];
+    y[i] = data[k + 1];
+    nx[i] = data[k + 2];
+    ny[i] = data[k + 3];
   }
 }
 
-/** B's polygon moved into A's frame by `relative`. */
-function loadPolygonB(g: Polygon): void {
+/** B's packed shape moved into A's frame by `relative`. */
+function loadPolygonB(data: Float64Array, base: number): void {
   const relC = relative[0];
   const relS = relative[1];
   const relX = relative[2];
   const relY = relative[3];
-  const v = g.vertices;
-  const normals = g.normals;
   const x = polyB.x;
   const y = polyB.y;
   const nx = polyB.nx;
   const ny = polyB.ny;
-  polyB.count = g.count;
-  polyB.radius = g.radius;
-  for (let i = 0, n = g.count; i < n; i++) {
-    const vi = v[i];
-    const ni = normals[i];
-    const vx = vi.x;
-    const vy = vi.y;
-    const mx = ni.x;
-    const my = ni.y;
+  const n = data[base + PACK_COUNT];
+  polyB.count = n;
+  polyB.radius = data[base + PACK_RADIUS];
+  for (let i = 0, k = base + PACK_VERTICES; i < n; i++, k += PACK_VERTEX_STRIDE) {
+    const vx = data[k];
+    const vy = data[k + 1];
+    const mx = data[k + 2];
+    const my = data[k + 3];
     x[i] = relC * vx - relS * vy + relX;
     y[i] = relS * vx + relC * vy + relY;
     nx[i] = relC * mx - relS * my;
     ny[i] = relS * mx + relC * my;
   }
-}
-
-/** A segment (A's own, untransformed) as a 2-vertex polygon: edge 0 runs p1->p2, edge 1 back. */
-function loadSegmentA(p1x: number, p1y: number, p2x: number, p2y: number, radius: number): void {
-  // the identity transform of A's frame, written out so the bits match a transformed load
-  const x1 = p1x - 0 * p1y + 0;
-  const y1 = 0 * p1x + p1y + 0;
-  const x2 = p2x - 0 * p2y + 0;
-  const y2 = 0 * p2x + p2y + 0;
-  const ex = x2 - x1;
-  const ey = y2 - y1;
-  const length = Math.sqrt(ex * ex + ey * ey);
-  const out = polyA;
-  out.count = 2;
-  out.radius = radius;
-  out.x[0] = x1;
-  out.y[0] = y1;
-  out.x[1] = x2;
-  out.y[1] = y2;
-  out.nx[0] = ey / length;
-  out.ny[0] = -ex / length;
-  out.nx[1] = -ey / length;
-  out.ny[1] = ex / length;
 }
 
 /**
@@ -389,13 +372,9 @@ function collideLoaded(speculativeDistance: number): number {
 let referenceFlip = false;
 
 /** Writes `count` points of `local` to the world manifold (points halfway between the surfaces). */
-function writeManifold(xfA: Transform, count: number, out: Manifold): void {
+function writeManifold(c: number, s: number, px: number, py: number, count: number, out: Manifold): void {
   out.pointCount = count;
   if (count === 0) return;
-  const c = xfA.q.c;
-  const s = xfA.q.s;
-  const px = xfA.p.x;
-  const py = xfA.p.y;
   const nx = local[L_NX];
   const ny = local[L_NY];
   const flip = referenceFlip;
@@ -419,44 +398,59 @@ function writeManifold(xfA: Transform, count: number, out: Manifold): void {
   }
 }
 
-export function collidePolygons(
-  a: Polygon,
-  xfA: Transform,
-  b: Polygon,
-  xfB: Transform,
+/**
+ * The manifold of two packed polygon-like shapes (polygons, capsules, segments; see packed.ts), both
+ * records in `data`, A at transform (ac, as, ax, ay) and B at (bc, bs, bx, by).
+ */
+export function collidePackedPolygons(
+  data: Float64Array,
+  baseA: number,
+  ac: number,
+  as: number,
+  ax: number,
+  ay: number,
+  baseB: number,
+  bc: number,
+  bs: number,
+  bx: number,
+  by: number,
   speculativeDistance: number,
   out: Manifold,
 ): void {
-  loadPolygonA(a);
-  setRelative(xfA, xfB);
-  loadPolygonB(b);
-  writeManifold(xfA, collideLoaded(speculativeDistance), out);
+  loadPolygonA(data, baseA);
+  setRelative(ac, as, ax, ay, bc, bs, bx, by);
+  loadPolygonB(data, baseB);
+  writeManifold(ac, as, ax, ay, collideLoaded(speculativeDistance), out);
 }
 
-export function collideCapsulePolygon(
-  a: Capsule,
-  xfA: Transform,
-  b: Polygon,
-  xfB: Transform,
-  speculativeDistance: number,
-  out: Manifold,
-): void {
-  loadSegmentA(a.center1.x, a.center1.y, a.center2.x, a.center2.y, a.radius);
-  setRelative(xfA, xfB);
-  loadPolygonB(b);
-  writeManifold(xfA, collideLoaded(speculativeDistance), out);
-}
+const scratch = new Float64Array(2 * PACK_STRIDE);
 
-export function collideSegmentPolygon(
-  a: Segment,
+/** Polygon, capsule or segment against a polygon, from geometry objects (queries, tests). */
+export function collidePolygonLike(
+  a: Polygon | Capsule | Segment,
   xfA: Transform,
   b: Polygon,
   xfB: Transform,
   speculativeDistance: number,
   out: Manifold,
 ): void {
-  loadSegmentA(a.point1.x, a.point1.y, a.point2.x, a.point2.y, 0);
-  setRelative(xfA, xfB);
-  loadPolygonB(b);
-  writeManifold(xfA, collideLoaded(speculativeDistance), out);
+  packGeometry(a, scratch, 0);
+  packGeometry(b, scratch, PACK_STRIDE);
+  const qa = xfA.q;
+  const qb = xfB.q;
+  collidePackedPolygons(
+    scratch,
+    0,
+    qa.c,
+    qa.s,
+    xfA.p.x,
+    xfA.p.y,
+    PACK_STRIDE,
+    qb.c,
+    qb.s,
+    xfB.p.x,
+    xfB.p.y,
+    speculativeDistance,
+    out,
+  );
 }

@@ -6,12 +6,7 @@ import {
   collideCircleSegment,
   collideCircles,
 } from './manifold-circle';
-import {
-  clearCollideHints,
-  collideCapsulePolygon,
-  collidePolygons,
-  collideSegmentPolygon,
-} from './manifold-polygon';
+import { clearCollideHints, collidePolygonLike } from './manifold-polygon';
 import type { Geometry, Manifold } from './types';
 
 export { collideCapsuleSegment, collideCapsules } from './manifold-capsule';
@@ -21,7 +16,7 @@ export {
   collideCircleSegment,
   collideCircles,
 } from './manifold-circle';
-export { collideCapsulePolygon, collidePolygons, collideSegmentPolygon } from './manifold-polygon';
+export { collidePolygonLike } from './manifold-polygon';
 
 /*
  * Contact ids (ManifoldPoint.id), stable while the same features touch:
@@ -65,15 +60,15 @@ const PAIRS: readonly PairFunction[] = [
   collideCircleCapsule as PairFunction, // capsule-circle (swapped)
   collideCapsules as PairFunction, // capsule-capsule
   collideCapsuleSegment as PairFunction, // capsule-segment
-  collideCapsulePolygon as PairFunction, // capsule-polygon
+  collidePolygonLike as PairFunction, // capsule-polygon
   collideCircleSegment as PairFunction, // segment-circle (swapped)
   collideCapsuleSegment as PairFunction, // segment-capsule (swapped)
   collideNothing, // segment-segment: segments live on static or kinematic bodies only
-  collideSegmentPolygon as PairFunction, // segment-polygon
+  collidePolygonLike as PairFunction, // segment-polygon
   collideCirclePolygon as PairFunction, // polygon-circle (swapped)
-  collideCapsulePolygon as PairFunction, // polygon-capsule (swapped)
-  collideSegmentPolygon as PairFunction, // polygon-segment (swapped)
-  collidePolygons as PairFunction, // polygon-polygon
+  collidePolygonLike as PairFunction, // polygon-capsule (swapped)
+  collidePolygonLike as PairFunction, // polygon-segment (swapped)
+  collidePolygonLike as PairFunction, // polygon-polygon
 ];
 
 /** 1 where the pair function takes the shapes in the other order: call it swapped, flip the normal. */
