@@ -5,28 +5,25 @@ import type { ContactStore } from './contact-store';
 import type { ShapeStore } from './shape-store';
 import type { Softness } from './softness';
 
-// Layout of one contact constraint in `ContactConstraints.data` (doubles).
+// Layout of one contact constraint in `ContactConstraints.data` (doubles). Kept small: the solver
+// streams it eight times a step, and a large pile's constraints do not fit in the cache.
 const C_NX = 0;
 const C_NY = 1;
 const C_FRICTION = 2;
-const C_RESTITUTION = 3;
-const C_MA = 4;
-const C_IA = 5;
-const C_MB = 6;
-const C_IB = 7;
-const C_COUNT = 8;
-const C_BIAS_RATE = 9;
-const C_MASS_SCALE = 10;
-const C_IMPULSE_SCALE = 11;
-/** 2x2 normal mass matrix K of two-point manifolds; C_BLOCK = 1 when K is well conditioned */
-const C_K11 = 12;
-const C_K12 = 13;
-const C_K22 = 14;
-const C_BLOCK = 15;
-/** compliance (impulseScale / massScale) K11 and K22 of pushing points, for the block solve */
-const C_G1 = 16;
-const C_G2 = 17;
-const C_POINTS = 18;
+const C_MA = 3;
+const C_IA = 4;
+const C_MB = 5;
+const C_IB = 6;
+const C_COUNT = 7;
+/** 1 when the contact uses the anchored (ground) softness, 0 for the contact softness */
+const C_ANCHORED = 8;
+/** 1 when the two points are solved as a block: K below is well conditioned */
+const C_BLOCK = 9;
+/** 2x2 normal mass matrix K of two-point manifolds */
+const C_K11 = 10;
+const C_K12 = 11;
+const C_K22 = 12;
+const C_POINTS = 13;
 /** K's condition number above which the two points are solved one after the other */
 const MAX_CONDITION = 1000;
 // Per point, relative to its base.
@@ -34,43 +31,57 @@ const P_RAX = 0;
 const P_RAY = 1;
 const P_RBX = 2;
 const P_RBY = 3;
-/** separation at the start of the step minus the anchors' offset along the normal */
-const P_ADJ_SEP = 4;
-const P_NMASS = 5;
-const P_TMASS = 6;
-const P_NIMP = 7;
-const P_TIMP = 8;
-const P_MAX_NIMP = 9;
-/** normal relative velocity before the step (negative when approaching) */
-const P_REL_VEL = 10;
 /**
- * Anchors used to track the separation through the substeps: the contact point moved back onto each
- * shape's core (by the shape's radius). They turn with the body; for a circle the core point is its
- * centre, so a fast-spinning ball does not drag its contact point around with it.
+ * The separation is tracked through the substeps between the contact point moved back onto each
+ * shape's core (by the shape's radius and half the separation): these core points turn with the body,
+ * and for a circle the core point is its centre, so a fast-spinning ball does not drag its contact
+ * point around with it. Stored as the distances back from the anchor along the normal: rotated by a
+ * body's turn q, the offset -back n of A's core point contributes back * cos(q) along n.
  */
-const P_SAX = 11;
-const P_SAY = 12;
-const P_SBX = 13;
-const P_SBY = 14;
-const P_STRIDE = 15;
+const P_BACK_A = 4;
+const P_BACK_B = 5;
+/** separation at the start of the step minus the core points' offset along the normal */
+const P_ADJ_SEP = 6;
+const P_NMASS = 7;
+const P_TMASS = 8;
+const P_NIMP = 9;
+const P_TIMP = 10;
+const P_MAX_NIMP = 11;
+const P_STRIDE = 12;
 export const CONSTRAINT_STRIDE = C_POINTS + 2 * P_STRIDE;
+// Layout of `ContactConstraints.restitution`: read only after the substeps.
+const R_RESTITUTION = 0;
+/** normal relative velocity of each point before the step (negative when approaching) */
+const R_REL_VEL = 1;
+const R_STRIDE = 3;
 
 /** Contact constraints of one step, packed one block per touching contact (no objects). */
 export class ContactConstraints {
   count = 0;
   capacity = 0;
   data = new Float64Array(0);
+  restitution = new Float64Array(0);
   /** body A, body B and contact slot of each constraint */
   ids = new Int32Array(0);
+  /** bias rate, mass scale, impulse scale and compliance (impulse / mass scale) of the contact (0..3) and anchored (4..7) softness */
+  readonly softness = new Float64Array(8);
 
   reserve(n: number): void {
     if (n <= this.capacity) return;
     let capacity = Math.max(64, this.capacity);
     while (capacity < n) capacity *= 2;
     this.data = growF64(this.data, capacity * CONSTRAINT_STRIDE);
+    this.restitution = growF64(this.restitution, capacity * R_STRIDE);
     this.ids = growI32(this.ids, capacity * 3);
     this.capacity = capacity;
   }
+}
+
+function setSoftness(out: Float64Array, at: number, soft: Softness): void {
+  out[at] = soft.biasRate;
+  out[at + 1] = soft.massScale;
+  out[at + 2] = soft.impulseScale;
+  out[at + 3] = soft.impulseScale / soft.massScale;
 }
 
 /** mass ratio from which a contact between two moving bodies is as stiff as one with the ground */
@@ -94,7 +105,10 @@ export function prepareContacts(
   anchoredSoft: Softness,
 ): void {
   cc.reserve(count);
+  setSoftness(cc.softness, 0, contactSoft);
+  setSoftness(cc.softness, 4, anchoredSoft);
   const d = cc.data;
+  const rd = cc.restitution;
   const pointX = contacts.pointX;
   const pointY = contacts.pointY;
   const separation = contacts.separation;
@@ -122,7 +136,6 @@ export function prepareContacts(
     // stiffness follows the light body's mass, and under the heavy one's weight it would sink.
     const anchored =
       (mA === 0 && iA === 0) || (mB === 0 && iB === 0) || mA >= HEAVY_RATIO * mB || mB >= HEAVY_RATIO * mA;
-    const soft = anchored ? anchoredSoft : contactSoft;
     const nx = contacts.normalX[c];
     const ny = contacts.normalY[c];
     const cAx = cx[a];
@@ -133,21 +146,20 @@ export function prepareContacts(
     const radiusB = radius[sB];
     const pointCount = contacts.pointCount[c];
     const base = i * CONSTRAINT_STRIDE;
+    const rBase = i * R_STRIDE;
     cc.ids[i * 3] = a;
     cc.ids[i * 3 + 1] = b;
     cc.ids[i * 3 + 2] = c;
     d[base + C_NX] = nx;
     d[base + C_NY] = ny;
     d[base + C_FRICTION] = Math.sqrt(friction[sA] * friction[sB]);
-    d[base + C_RESTITUTION] = Math.max(restitution[sA], restitution[sB]);
     d[base + C_MA] = mA;
     d[base + C_IA] = iA;
     d[base + C_MB] = mB;
     d[base + C_IB] = iB;
     d[base + C_COUNT] = pointCount;
-    d[base + C_BIAS_RATE] = soft.biasRate;
-    d[base + C_MASS_SCALE] = soft.massScale;
-    d[base + C_IMPULSE_SCALE] = soft.impulseScale;
+    d[base + C_ANCHORED] = anchored ? 1 : 0;
+    rd[rBase + R_RESTITUTION] = Math.max(restitution[sA], restitution[sB]);
     const sa = a * STATE_STRIDE;
     const sb = b * STATE_STRIDE;
     const vAx = state[sa + S_VX];
@@ -173,15 +185,9 @@ export function prepareContacts(
       const sep = separation[k];
       const backA = radiusA + 0.5 * sep;
       const backB = radiusB + 0.5 * sep;
-      const sAx = rAx - backA * nx;
-      const sAy = rAy - backA * ny;
-      const sBx = rBx + backB * nx;
-      const sBy = rBy + backB * ny;
-      d[p + P_SAX] = sAx;
-      d[p + P_SAY] = sAy;
-      d[p + P_SBX] = sBx;
-      d[p + P_SBY] = sBy;
-      d[p + P_ADJ_SEP] = sep - ((sBx - sAx) * nx + (sBy - sAy) * ny);
+      d[p + P_BACK_A] = backA;
+      d[p + P_BACK_B] = backB;
+      d[p + P_ADJ_SEP] = sep - ((rBx - rAx) * nx + (rBy - rAy) * ny + backA + backB);
       const rnA = rAx * ny - rAy * nx;
       const rnB = rBx * ny - rBy * nx;
       const kN = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
@@ -195,7 +201,7 @@ export function prepareContacts(
       d[p + P_MAX_NIMP] = 0;
       const dvx = vBx - wB * rBy - vAx + wA * rAy;
       const dvy = vBy + wB * rBx - vAy - wA * rAx;
-      d[p + P_REL_VEL] = dvx * nx + dvy * ny;
+      rd[rBase + R_REL_VEL + j] = dvx * nx + dvy * ny;
     }
     d[base + C_BLOCK] = 0;
     if (pointCount === 2) {
@@ -214,9 +220,6 @@ export function prepareContacts(
         d[base + C_K12] = k12;
         d[base + C_K22] = k22;
         d[base + C_BLOCK] = 1;
-        const compliance = soft.impulseScale / soft.massScale;
-        d[base + C_G1] = compliance * k11;
-        d[base + C_G2] = compliance * k22;
       }
     }
   }
@@ -283,6 +286,7 @@ export function solveContacts(
 ): void {
   const d = cc.data;
   const ids = cc.ids;
+  const soft = cc.softness;
   for (let i = 0, n = cc.count; i < n; i++) {
     const base = i * CONSTRAINT_STRIDE;
     const sa = ids[i * 3] * STATE_STRIDE;
@@ -293,9 +297,10 @@ export function solveContacts(
     const iB = d[base + C_IB];
     const nx = d[base + C_NX];
     const ny = d[base + C_NY];
-    const biasRate = d[base + C_BIAS_RATE];
-    const massScale = d[base + C_MASS_SCALE];
-    const impulseScale = d[base + C_IMPULSE_SCALE];
+    const k = d[base + C_ANCHORED] === 1 ? 4 : 0;
+    const biasRate = soft[k];
+    const massScale = soft[k + 1];
+    const impulseScale = soft[k + 2];
     let vAx = state[sa + S_VX];
     let vAy = state[sa + S_VY];
     let wA = state[sa + S_W];
@@ -308,6 +313,8 @@ export function solveContacts(
     const qAs = state[sa + S_DQS];
     const qBc = state[sb + S_DQC];
     const qBs = state[sb + S_DQS];
+    // the anchors' relative motion along the normal, without the anchors: add (qB rB - qA rA) . n
+    const dpn = dpx * nx + dpy * ny;
     const count = d[base + C_COUNT];
 
     if (d[base + C_BLOCK] === 1) {
@@ -321,19 +328,24 @@ export function solveContacts(
       const r2Ay = d[p2 + P_RAY];
       const r2Bx = d[p2 + P_RBX];
       const r2By = d[p2 + P_RBY];
-      // current separations from the motion accumulated since the step began (see P_SAX)
+      // current separations from the motion accumulated since the step began (see P_BACK_A)
       const s1 =
-        (dpx + (qBc * d[p1 + P_SBX] - qBs * d[p1 + P_SBY]) - (qAc * d[p1 + P_SAX] - qAs * d[p1 + P_SAY])) *
-          nx +
-        (dpy + (qBs * d[p1 + P_SBX] + qBc * d[p1 + P_SBY]) - (qAs * d[p1 + P_SAX] + qAc * d[p1 + P_SAY])) *
-          ny +
+        dpn +
+        (qBc * r1Bx - qBs * r1By - qAc * r1Ax + qAs * r1Ay) * nx +
+        (qBs * r1Bx + qBc * r1By - qAs * r1Ax - qAc * r1Ay) * ny +
+        d[p1 + P_BACK_A] * qAc +
+        d[p1 + P_BACK_B] * qBc +
         d[p1 + P_ADJ_SEP];
       const s2 =
-        (dpx + (qBc * d[p2 + P_SBX] - qBs * d[p2 + P_SBY]) - (qAc * d[p2 + P_SAX] - qAs * d[p2 + P_SAY])) *
-          nx +
-        (dpy + (qBs * d[p2 + P_SBX] + qBc * d[p2 + P_SBY]) - (qAs * d[p2 + P_SAX] + qAc * d[p2 + P_SAY])) *
-          ny +
+        dpn +
+        (qBc * r2Bx - qBs * r2By - qAc * r2Ax + qAs * r2Ay) * nx +
+        (qBs * r2Bx + qBc * r2By - qAs * r2Ax - qAc * r2Ay) * ny +
+        d[p2 + P_BACK_A] * qAc +
+        d[p2 + P_BACK_B] * qBc +
         d[p2 + P_ADJ_SEP];
+      const k11 = d[base + C_K11];
+      const k12 = d[base + C_K12];
+      const k22 = d[base + C_K22];
       // soft terms per point: speculative (s > 0) points may approach until they touch, not further;
       // pushing points follow the soft constraint with bias, or none in the relax pass
       let b1 = 0;
@@ -341,22 +353,19 @@ export function solveContacts(
       if (s1 > 0) b1 = s1 * invH;
       else if (useBias) {
         b1 = Math.max(biasRate * s1, -maxPushSpeed);
-        g1 = d[base + C_G1];
+        g1 = soft[k + 3] * k11;
       }
       let b2 = 0;
       let g2 = 0;
       if (s2 > 0) b2 = s2 * invH;
       else if (useBias) {
         b2 = Math.max(biasRate * s2, -maxPushSpeed);
-        g2 = d[base + C_G2];
+        g2 = soft[k + 3] * k22;
       }
       const vn1 = (vBx - wB * r1By - vAx + wA * r1Ay) * nx + (vBy + wB * r1Bx - vAy - wA * r1Ax) * ny;
       const vn2 = (vBx - wB * r2By - vAx + wA * r2Ay) * nx + (vBy + wB * r2Bx - vAy - wA * r2Ax) * ny;
       const l1 = d[p1 + P_NIMP];
       const l2 = d[p2 + P_NIMP];
-      const k11 = d[base + C_K11];
-      const k12 = d[base + C_K12];
-      const k22 = d[base + C_K22];
       // Soft block solve: find new impulses x >= 0 with vn' + b + G x = 0 on pushing points, where
       // vn' = vn + K (x - l) and G = diag(is/ms * Kii) is each point's compliance. This is exactly the
       // fixed point of the one-point soft update, so the block and the one-point paths agree.
@@ -404,8 +413,11 @@ export function solveContacts(
         const rBx = d[p + P_RBX];
         const rBy = d[p + P_RBY];
         const sep =
-          (dpx + (qBc * d[p + P_SBX] - qBs * d[p + P_SBY]) - (qAc * d[p + P_SAX] - qAs * d[p + P_SAY])) * nx +
-          (dpy + (qBs * d[p + P_SBX] + qBc * d[p + P_SBY]) - (qAs * d[p + P_SAX] + qAc * d[p + P_SAY])) * ny +
+          dpn +
+          (qBc * rBx - qBs * rBy - qAc * rAx + qAs * rAy) * nx +
+          (qBs * rBx + qBc * rBy - qAs * rAx - qAc * rAy) * ny +
+          d[p + P_BACK_A] * qAc +
+          d[p + P_BACK_B] * qBc +
           d[p + P_ADJ_SEP];
         let bias = 0;
         let mScale = 1;
@@ -480,7 +492,8 @@ export function applyRestitution(cc: ContactConstraints, state: Float64Array, th
   const ids = cc.ids;
   for (let i = 0, n = cc.count; i < n; i++) {
     const base = i * CONSTRAINT_STRIDE;
-    const restitution = d[base + C_RESTITUTION];
+    const rBase = i * R_STRIDE;
+    const restitution = cc.restitution[rBase + R_RESTITUTION];
     if (restitution === 0) continue;
     const sa = ids[i * 3] * STATE_STRIDE;
     const sb = ids[i * 3 + 1] * STATE_STRIDE;
@@ -499,7 +512,7 @@ export function applyRestitution(cc: ContactConstraints, state: Float64Array, th
     const count = d[base + C_COUNT];
     for (let j = 0; j < count; j++) {
       const p = base + C_POINTS + j * P_STRIDE;
-      const relVel = d[p + P_REL_VEL];
+      const relVel = cc.restitution[rBase + R_REL_VEL + j];
       if (relVel > -threshold || d[p + P_MAX_NIMP] === 0) continue;
       const rAx = d[p + P_RAX];
       const rAy = d[p + P_RAY];
@@ -552,7 +565,7 @@ export function storeImpulses(
       normalImpulse[k] = d[p + P_NIMP];
       tangentImpulse[k] = d[p + P_TIMP];
       maxNormalImpulse[k] = d[p + P_MAX_NIMP];
-      approachSpeed[k] = -d[p + P_REL_VEL];
+      approachSpeed[k] = -cc.restitution[i * R_STRIDE + R_REL_VEL + j];
     }
   }
 }
