@@ -126,13 +126,16 @@ export function solve(core: WorldCore, dt: number): void {
   const subSteps = core.subSteps;
   const h = dt / subSteps;
   const invH = 1 / h;
-  const joints = prepareJoints(core, h);
-  const jointCount = joints.length;
   const ctx = core.jointContext;
   const tree = core.jointTree;
+  const hinges = core.hingeBatch;
+  hinges.collect(prepareJoints(core, h), tree.iterative);
+  const joints = hinges.otherActive;
+  const jointCount = joints.length;
   const treeBias = ctx.jointSoftness.biasRate;
-  const iterative = tree.iterative;
+  const iterative = hinges.otherIterative;
   const iterativeCount = iterative.length;
+  const jointSoft = ctx.jointSoftness;
   prepareContacts(core, h);
   const bodies = core.bodies;
   const state = bodies.state;
@@ -144,21 +147,25 @@ export function solve(core: WorldCore, dt: number): void {
   const coupled = tree.isCoupled(cc.ids, cc.count);
   for (let i = 0; i < subSteps; i++) {
     integrateVelocities(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, settings.maxLinearSpeed);
+    hinges.warmStart(state, ctx.warmSpeedLimit, ctx.warmTurnLimit);
     for (let j = 0; j < jointCount; j++) joints[j].warmStartGuarded(ctx);
     warmStartContacts(cc, state);
     // positions change only in integratePositions: the last substep's relax factorization still holds
     if (i === 0) tree.factor(ctx);
     tree.project(state, treeBias);
+    hinges.solve(state, jointSoft, true);
     for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, true);
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, treeBias);
     integratePositions(state, awake, awakeCount, h);
     tree.factor(ctx);
     tree.project(state, 0);
+    hinges.solve(state, jointSoft, false);
     for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, false);
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, 0);
   }
+  hinges.store();
   applyRestitution(cc, state, settings.restitutionThreshold);
   const contacts = core.contacts;
   storeImpulses(

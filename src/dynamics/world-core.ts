@@ -16,6 +16,7 @@ import { CONTACT_SENSOR, CONTACT_TOUCHING, ContactStore } from './contact-store'
 import { EventBuffers } from './event-buffers';
 import { GraphColoring } from './graph-color';
 import { Islands } from './island';
+import { HingeBatch } from './joints/hinge-batch';
 import type { Joint } from './joints/joint';
 import type { JointContext } from './joints/joint-context';
 import { JointTree } from './joints/joint-tree';
@@ -76,6 +77,8 @@ export class WorldCore {
   readonly activeJoints: Joint[] = [];
   /** the exact solver of the active joints that form a forest */
   readonly jointTree = new JointTree();
+  /** the plain hinges of the current step, solved from flat arrays */
+  readonly hingeBatch = new HingeBatch();
   readonly jointContext: JointContext = {
     state: new Float64Array(0),
     invMass: new Float64Array(0),

@@ -3,6 +3,7 @@ import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
 import type { World } from '../world';
+import { H_DCX, H_DCY, H_IA, H_IB, H_MA, H_MB, H_RAX0, H_RAY0, H_RBX0, H_RBY0 } from './hinge-batch';
 import type { JointContext } from './joint-context';
 import { relativeAngle } from './joint-math';
 
@@ -283,6 +284,33 @@ export abstract class Joint {
     }
     for (let r = first; r < 3; r++) err[3 * j + r] = 0;
   }
+
+  /**
+   * @internal Whether this step the joint is a plain hinge for the HingeBatch: point rows only,
+   * solved by Gauss-Seidel (not in the tree, no closure, no limit, motor or spring).
+   */
+  isPlainHinge(): boolean {
+    return false;
+  }
+
+  /** @internal Writes this step's solver data to the hinge batch (see HingeBatch). */
+  packHinge(data: Float64Array, base: number, ids: Int32Array, k: number): void {
+    ids[k] = this.a;
+    ids[k + 1] = this.b;
+    data[base + H_MA] = this.mA;
+    data[base + H_IA] = this.iA;
+    data[base + H_MB] = this.mB;
+    data[base + H_IB] = this.iB;
+    data[base + H_RAX0] = this.rAx0;
+    data[base + H_RAY0] = this.rAy0;
+    data[base + H_RBX0] = this.rBx0;
+    data[base + H_RBY0] = this.rBy0;
+    data[base + H_DCX] = this.dcx;
+    data[base + H_DCY] = this.dcy;
+  }
+
+  /** @internal Takes back the point impulse the hinge batch accumulated. */
+  unpackHinge(_data: Float64Array, _base: number): void {}
 
   /** @internal */
   abstract prepare(ctx: JointContext): void;

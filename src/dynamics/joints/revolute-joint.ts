@@ -4,6 +4,7 @@ import type { Body } from '../body';
 import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
 import { makeSoftness, type Softness } from '../softness';
 import type { World } from '../world';
+import { H_LX, H_LY } from './hinge-batch';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 import { relativeAngle, solve22, solved } from './joint-math';
@@ -162,6 +163,25 @@ export class RevoluteJoint extends Joint {
   override treeAddImpulse(solution: Float64Array, o: number): void {
     this.linearX -= solution[o];
     this.linearY -= solution[o + 1];
+  }
+
+  /** @internal */
+  override isPlainHinge(): boolean {
+    const o = this.o;
+    return !this.inTree && !this.closure && !o.enableLimit && !o.enableMotor && !o.enableSpring;
+  }
+
+  /** @internal */
+  override packHinge(data: Float64Array, base: number, ids: Int32Array, k: number): void {
+    super.packHinge(data, base, ids, k);
+    data[base + H_LX] = this.linearX;
+    data[base + H_LY] = this.linearY;
+  }
+
+  /** @internal */
+  override unpackHinge(data: Float64Array, base: number): void {
+    this.linearX = data[base + H_LX];
+    this.linearY = data[base + H_LY];
   }
 
   /** @internal */

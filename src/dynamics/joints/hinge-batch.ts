@@ -1,0 +1,182 @@
+import { growF64, growI32 } from '../../core/grow';
+import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import type { Softness } from '../softness';
+import type { Joint } from './joint';
+
+// Layout of one hinge in `HingeBatch.data` (doubles); see Joint for the meaning of the fields.
+export const H_MA = 0;
+export const H_IA = 1;
+export const H_MB = 2;
+export const H_IB = 3;
+export const H_RAX0 = 4;
+export const H_RAY0 = 5;
+export const H_RBX0 = 6;
+export const H_RBY0 = 7;
+export const H_DCX = 8;
+export const H_DCY = 9;
+/** accumulated point impulse */
+export const H_LX = 10;
+export const H_LY = 11;
+export const HINGE_STRIDE = 12;
+
+/**
+ * The plain hinges of a step (revolute joints without limit, motor or spring, solved by Gauss-Seidel:
+ * grids, cloth, loops the tree does not take) packed into flat arrays, like the contacts: a joint
+ * object keeps each field in its own heap box and is reached through a virtual call, which made
+ * such joints cost three times what their arithmetic does. The joints pack their step data here
+ * (Joint.packHinge) and get their impulses back after the substeps (Joint.unpackHinge). The
+ * arithmetic is the revolute joint's point rows, term for term.
+ */
+export class HingeBatch {
+  count = 0;
+  data = new Float64Array(0);
+  /** body A and body B of each hinge */
+  ids = new Int32Array(0);
+  readonly joints: Joint[] = [];
+  /** the active joints that are not in the batch, in their order */
+  readonly otherActive: Joint[] = [];
+  /** the iterative joints that are not in the batch, in their order */
+  readonly otherIterative: Joint[] = [];
+
+  /** Takes the plain hinges out of `iterative`; the other joints keep their order. */
+  collect(active: readonly Joint[], iterative: readonly Joint[]): void {
+    this.joints.length = 0;
+    this.otherIterative.length = 0;
+    this.otherActive.length = 0;
+    for (const joint of iterative) {
+      if (joint.isPlainHinge()) this.joints.push(joint);
+      else this.otherIterative.push(joint);
+    }
+    for (const joint of active) if (!joint.isPlainHinge()) this.otherActive.push(joint);
+    const n = this.joints.length;
+    if (this.data.length < n * HINGE_STRIDE) {
+      const capacity = Math.max(64, 2 * n);
+      this.data = growF64(this.data, capacity * HINGE_STRIDE);
+      this.ids = growI32(this.ids, capacity * 2);
+    }
+    for (let i = 0; i < n; i++) this.joints[i].packHinge(this.data, i * HINGE_STRIDE, this.ids, 2 * i);
+    this.count = n;
+  }
+
+  /** Returns the accumulated impulses to the joints (warm start of the next step, reaction force). */
+  store(): void {
+    for (let i = 0; i < this.count; i++) this.joints[i].unpackHinge(this.data, i * HINGE_STRIDE);
+  }
+
+  /**
+   * Applies the kept impulses; as Joint.warmStartGuarded, a hinge whose warm start would throw a body
+   * past `speedLimit` or `turnLimit` leaves the velocities as they were and forgets its impulse.
+   */
+  warmStart(state: Float64Array, speedLimit: number, turnLimit: number): void {
+    const d = this.data;
+    const ids = this.ids;
+    const v2 = speedLimit * speedLimit;
+    for (let i = 0, n = this.count; i < n; i++) {
+      const base = i * HINGE_STRIDE;
+      const sa = ids[2 * i] * STATE_STRIDE;
+      const sb = ids[2 * i + 1] * STATE_STRIDE;
+      const mA = d[base + H_MA];
+      const iA = d[base + H_IA];
+      const mB = d[base + H_MB];
+      const iB = d[base + H_IB];
+      let c = state[sa + S_DQC];
+      let s = state[sa + S_DQS];
+      const rAx = c * d[base + H_RAX0] - s * d[base + H_RAY0];
+      const rAy = s * d[base + H_RAX0] + c * d[base + H_RAY0];
+      c = state[sb + S_DQC];
+      s = state[sb + S_DQS];
+      const rBx = c * d[base + H_RBX0] - s * d[base + H_RBY0];
+      const rBy = s * d[base + H_RBX0] + c * d[base + H_RBY0];
+      const px = d[base + H_LX];
+      const py = d[base + H_LY];
+      const vAx = state[sa + S_VX];
+      const vAy = state[sa + S_VY];
+      const wA = state[sa + S_W];
+      const vBx = state[sb + S_VX];
+      const vBy = state[sb + S_VY];
+      const wB = state[sb + S_W];
+      const nAx = vAx - mA * px;
+      const nAy = vAy - mA * py;
+      const nwA = wA - iA * (rAx * py - rAy * px + 0);
+      const nBx = vBx + mB * px;
+      const nBy = vBy + mB * py;
+      const nwB = wB + iB * (rBx * py - rBy * px + 0);
+      // written so that NaN fails the test too
+      if (
+        nAx * nAx + nAy * nAy <= v2 &&
+        nBx * nBx + nBy * nBy <= v2 &&
+        Math.abs(nwA) <= turnLimit &&
+        Math.abs(nwB) <= turnLimit
+      ) {
+        state[sa + S_VX] = nAx;
+        state[sa + S_VY] = nAy;
+        state[sa + S_W] = nwA;
+        state[sb + S_VX] = nBx;
+        state[sb + S_VY] = nBy;
+        state[sb + S_W] = nwB;
+      } else {
+        d[base + H_LX] = 0;
+        d[base + H_LY] = 0;
+      }
+    }
+  }
+
+  /** One Gauss-Seidel pass over the hinges' point rows, soft with `useBias`, rigid without. */
+  solve(state: Float64Array, soft: Softness, useBias: boolean): void {
+    const d = this.data;
+    const ids = this.ids;
+    const biasRate = useBias ? soft.biasRate : 0;
+    const massScale = useBias ? soft.massScale : 1;
+    const impulseScale = useBias ? soft.impulseScale : 0;
+    for (let i = 0, n = this.count; i < n; i++) {
+      const base = i * HINGE_STRIDE;
+      const sa = ids[2 * i] * STATE_STRIDE;
+      const sb = ids[2 * i + 1] * STATE_STRIDE;
+      const mA = d[base + H_MA];
+      const iA = d[base + H_IA];
+      const mB = d[base + H_MB];
+      const iB = d[base + H_IB];
+      let c = state[sa + S_DQC];
+      let s = state[sa + S_DQS];
+      const rAx = c * d[base + H_RAX0] - s * d[base + H_RAY0];
+      const rAy = s * d[base + H_RAX0] + c * d[base + H_RAY0];
+      c = state[sb + S_DQC];
+      s = state[sb + S_DQS];
+      const rBx = c * d[base + H_RBX0] - s * d[base + H_RBY0];
+      const rBy = s * d[base + H_RBX0] + c * d[base + H_RBY0];
+      const sepX = state[sb + S_DPX] - state[sa + S_DPX] + d[base + H_DCX] + rBx - rAx;
+      const sepY = state[sb + S_DPY] - state[sa + S_DPY] + d[base + H_DCY] + rBy - rAy;
+      let vAx = state[sa + S_VX];
+      let vAy = state[sa + S_VY];
+      let wA = state[sa + S_W];
+      let vBx = state[sb + S_VX];
+      let vBy = state[sb + S_VY];
+      let wB = state[sb + S_W];
+      const bx = vBx - wB * rBy - vAx + wA * rAy + biasRate * sepX;
+      const by = vBy + wB * rBx - vAy - wA * rAx + biasRate * sepY;
+      const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+      const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+      const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+      let det = k11 * k22 - k12 * k12;
+      if (det !== 0) det = 1 / det;
+      const lx = d[base + H_LX];
+      const ly = d[base + H_LY];
+      const px = -massScale * (det * (k22 * bx - k12 * by)) - impulseScale * lx;
+      const py = -massScale * (det * (k11 * by - k12 * bx)) - impulseScale * ly;
+      d[base + H_LX] = lx + px;
+      d[base + H_LY] = ly + py;
+      vAx -= mA * px;
+      vAy -= mA * py;
+      wA -= iA * (rAx * py - rAy * px);
+      vBx += mB * px;
+      vBy += mB * py;
+      wB += iB * (rBx * py - rBy * px);
+      state[sa + S_VX] = vAx;
+      state[sa + S_VY] = vAy;
+      state[sa + S_W] = wA;
+      state[sb + S_VX] = vBx;
+      state[sb + S_VY] = vBy;
+      state[sb + S_W] = wB;
+    }
+  }
+}
