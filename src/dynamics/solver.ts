@@ -31,7 +31,6 @@ import {
 } from './contact-solver';
 import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
 import { deferBullet, solveBullets, solveContinuous } from './continuous';
-import type { Joint } from './joints/joint';
 import { SHAPE_HIT_EVENTS } from './shape-store';
 import { makeSoftness, type Softness } from './softness';
 import type { WorldCore } from './world-core';
@@ -53,8 +52,11 @@ export function collectAwakeBodies(core: WorldCore): void {
   core.awakeCount = count;
 }
 
-/** Prepares the joints that have an awake body; returns them in creation order. */
-function prepareJoints(core: WorldCore, h: number): Joint[] {
+/**
+ * Prepares the joints that have an awake body, in creation order: the tree takes its joints, then
+ * the plain hinges go to the hinge batch and the others prepare themselves.
+ */
+function prepareJoints(core: WorldCore, h: number): void {
   const bodies = core.bodies;
   const ctx = core.jointContext;
   ctx.state = bodies.state;
@@ -80,11 +82,10 @@ function prepareJoints(core: WorldCore, h: number): Joint[] {
     ) {
       continue;
     }
-    joint.prepare(ctx);
     active.push(joint);
   }
   core.jointTree.build(active, bodies.kind, bodies.invMass, bodies.invInertia);
-  return active;
+  core.hingeBatch.prepare(active, core.jointTree.iterative, ctx);
 }
 
 /** Builds one constraint per touching solid contact that has an awake body. */
@@ -129,7 +130,7 @@ export function solve(core: WorldCore, dt: number): void {
   const ctx = core.jointContext;
   const tree = core.jointTree;
   const hinges = core.hingeBatch;
-  hinges.collect(prepareJoints(core, h), tree.iterative);
+  prepareJoints(core, h);
   const joints = hinges.otherActive;
   const jointCount = joints.length;
   const treeBias = ctx.jointSoftness.biasRate;

@@ -2,6 +2,7 @@ import { growF64, growI32 } from '../../core/grow';
 import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
 import type { Softness } from '../softness';
 import type { Joint } from './joint';
+import type { JointContext } from './joint-context';
 
 // Layout of one hinge in `HingeBatch.data` (doubles); see Joint for the meaning of the fields.
 export const H_MA = 0;
@@ -23,8 +24,8 @@ export const HINGE_STRIDE = 12;
  * The plain hinges of a step (revolute joints without limit, motor or spring, solved by Gauss-Seidel:
  * grids, cloth, loops the tree does not take) packed into flat arrays, like the contacts: a joint
  * object keeps each field in its own heap box and is reached through a virtual call, which made
- * such joints cost three times what their arithmetic does. The joints pack their step data here
- * (Joint.packHinge) and get their impulses back after the substeps (Joint.unpackHinge). The
+ * such joints cost more than their arithmetic. The joints pack their step data here
+ * (Joint.packHinge, in place of prepare) and get their impulses back after the substeps (Joint.unpackHinge). The
  * arithmetic is the revolute joint's point rows, term for term.
  */
 export class HingeBatch {
@@ -38,23 +39,27 @@ export class HingeBatch {
   /** the iterative joints that are not in the batch, in their order */
   readonly otherIterative: Joint[] = [];
 
-  /** Takes the plain hinges out of `iterative`; the other joints keep their order. */
-  collect(active: readonly Joint[], iterative: readonly Joint[]): void {
+  /**
+   * Prepares the step's joints (`active`, after the tree's build): the plain hinges are packed here,
+   * the others prepare themselves. The other joints keep their order.
+   */
+  prepare(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext): void {
     this.joints.length = 0;
     this.otherIterative.length = 0;
     this.otherActive.length = 0;
-    for (const joint of iterative) {
+    for (const joint of active) {
       if (joint.isPlainHinge()) this.joints.push(joint);
-      else this.otherIterative.push(joint);
+      else this.otherActive.push(joint);
     }
-    for (const joint of active) if (!joint.isPlainHinge()) this.otherActive.push(joint);
+    for (const joint of iterative) if (!joint.isPlainHinge()) this.otherIterative.push(joint);
     const n = this.joints.length;
     if (this.data.length < n * HINGE_STRIDE) {
       const capacity = Math.max(64, 2 * n);
       this.data = growF64(this.data, capacity * HINGE_STRIDE);
       this.ids = growI32(this.ids, capacity * 2);
     }
-    for (let i = 0; i < n; i++) this.joints[i].packHinge(this.data, i * HINGE_STRIDE, this.ids, 2 * i);
+    for (let i = 0; i < n; i++) this.joints[i].packHinge(ctx, this.data, i * HINGE_STRIDE, this.ids, 2 * i);
+    for (const joint of this.otherActive) joint.prepare(ctx);
     this.count = n;
   }
 

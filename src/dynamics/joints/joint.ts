@@ -3,11 +3,26 @@ import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
 import type { World } from '../world';
-import { H_DCX, H_DCY, H_IA, H_IB, H_MA, H_MB, H_RAX0, H_RAY0, H_RBX0, H_RBY0 } from './hinge-batch';
+import {
+  H_DCX,
+  H_DCY,
+  H_IA,
+  H_IB,
+  H_MA,
+  H_MB,
+  H_RAX0,
+  H_RAY0,
+  H_RBX0,
+  H_RBY0,
+  HINGE_STRIDE,
+} from './hinge-batch';
 import type { JointContext } from './joint-context';
 import { relativeAngle } from './joint-math';
 
 export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'mouse' | 'motor';
+
+/** prepareBase's body data and anchors, in the hinge batch's layout */
+const baseScratch = new Float64Array(HINGE_STRIDE);
 
 /**
  * Base of every joint: two bodies, an anchor on each (in the body's frame, relative to its origin),
@@ -118,33 +133,52 @@ export abstract class Joint {
 
   /** @internal Reads body data and anchors for this step. */
   prepareBase(ctx: JointContext): void {
-    const a = this.bodyA.slot;
-    const b = this.bodyB.slot;
-    this.a = a;
-    this.b = b;
-    this.mA = ctx.invMass[a];
-    this.iA = ctx.invInertia[a];
-    this.mB = ctx.invMass[b];
-    this.iB = ctx.invInertia[b];
-    this.invH = ctx.invH;
-    let c = ctx.qc[a];
-    let s = ctx.qs[a];
-    let x = this.localAnchorAx - ctx.lcx[a];
-    let y = this.localAnchorAy - ctx.lcy[a];
-    this.rAx0 = c * x - s * y;
-    this.rAy0 = s * x + c * y;
-    c = ctx.qc[b];
-    s = ctx.qs[b];
-    x = this.localAnchorBx - ctx.lcx[b];
-    y = this.localAnchorBy - ctx.lcy[b];
-    this.rBx0 = c * x - s * y;
-    this.rBy0 = s * x + c * y;
-    this.dcx = ctx.cx[b] - ctx.cx[a];
-    this.dcy = ctx.cy[b] - ctx.cy[a];
+    const d = baseScratch;
+    this.writeBase(ctx, d, 0);
+    this.mA = d[H_MA];
+    this.iA = d[H_IA];
+    this.mB = d[H_MB];
+    this.iB = d[H_IB];
+    this.rAx0 = d[H_RAX0];
+    this.rAy0 = d[H_RAY0];
+    this.rBx0 = d[H_RBX0];
+    this.rBy0 = d[H_RBY0];
+    this.dcx = d[H_DCX];
+    this.dcy = d[H_DCY];
     this.rAx = this.rAx0;
     this.rAy = this.rAy0;
     this.rBx = this.rBx0;
     this.rBy = this.rBy0;
+  }
+
+  /**
+   * Sets the bodies' slots and the step's 1/h, and writes the step's body data and anchors in the
+   * hinge batch's layout (H_MA .. H_DCY) to `d` at `base`.
+   */
+  private writeBase(ctx: JointContext, d: Float64Array, base: number): void {
+    const a = this.bodyA.slot;
+    const b = this.bodyB.slot;
+    this.a = a;
+    this.b = b;
+    this.invH = ctx.invH;
+    d[base + H_MA] = ctx.invMass[a];
+    d[base + H_IA] = ctx.invInertia[a];
+    d[base + H_MB] = ctx.invMass[b];
+    d[base + H_IB] = ctx.invInertia[b];
+    let c = ctx.qc[a];
+    let s = ctx.qs[a];
+    let x = this.localAnchorAx - ctx.lcx[a];
+    let y = this.localAnchorAy - ctx.lcy[a];
+    d[base + H_RAX0] = c * x - s * y;
+    d[base + H_RAY0] = s * x + c * y;
+    c = ctx.qc[b];
+    s = ctx.qs[b];
+    x = this.localAnchorBx - ctx.lcx[b];
+    y = this.localAnchorBy - ctx.lcy[b];
+    d[base + H_RBX0] = c * x - s * y;
+    d[base + H_RBY0] = s * x + c * y;
+    d[base + H_DCX] = ctx.cx[b] - ctx.cx[a];
+    d[base + H_DCY] = ctx.cy[b] - ctx.cy[a];
   }
 
   /** Rotates the anchors by the bodies' rotation so far in the step and measures their separation. */
@@ -293,20 +327,14 @@ export abstract class Joint {
     return false;
   }
 
-  /** @internal Writes this step's solver data to the hinge batch (see HingeBatch). */
-  packHinge(data: Float64Array, base: number, ids: Int32Array, k: number): void {
+  /**
+   * @internal Prepares the step of a plain hinge (instead of prepare) and writes its solver data to
+   * the hinge batch (see HingeBatch).
+   */
+  packHinge(ctx: JointContext, data: Float64Array, base: number, ids: Int32Array, k: number): void {
+    this.writeBase(ctx, data, base);
     ids[k] = this.a;
     ids[k + 1] = this.b;
-    data[base + H_MA] = this.mA;
-    data[base + H_IA] = this.iA;
-    data[base + H_MB] = this.mB;
-    data[base + H_IB] = this.iB;
-    data[base + H_RAX0] = this.rAx0;
-    data[base + H_RAY0] = this.rAy0;
-    data[base + H_RBX0] = this.rBx0;
-    data[base + H_RBY0] = this.rBy0;
-    data[base + H_DCX] = this.dcx;
-    data[base + H_DCY] = this.dcy;
   }
 
   /** @internal Takes back the point impulse the hinge batch accumulated. */

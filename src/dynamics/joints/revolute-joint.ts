@@ -172,8 +172,13 @@ export class RevoluteJoint extends Joint {
   }
 
   /** @internal */
-  override packHinge(data: Float64Array, base: number, ids: Int32Array, k: number): void {
-    super.packHinge(data, base, ids, k);
+  override packHinge(ctx: JointContext, data: Float64Array, base: number, ids: Int32Array, k: number): void {
+    super.packHinge(ctx, data, base, ids, k);
+    // as prepare does for disabled rows
+    this.springImpulse = 0;
+    this.motorImpulse = 0;
+    this.lowerImpulse = 0;
+    this.upperImpulse = 0;
     data[base + H_LX] = this.linearX;
     data[base + H_LY] = this.linearY;
   }
