@@ -13,6 +13,25 @@ import {
 } from './body-store';
 
 /**
+ * Clamps the velocity of the body at state offset `s` to `maxSpeed` and `maxW`; an infinite or NaN
+ * velocity becomes zero. Written so that NaN fails the comparisons and takes the clamp.
+ */
+export function clampVelocity(state: Float64Array, s: number, maxSpeed: number, maxW: number): void {
+  const vx = state[s + S_VX];
+  const vy = state[s + S_VY];
+  const w = state[s + S_W];
+  const v2 = vx * vx + vy * vy;
+  if (!(v2 <= maxSpeed * maxSpeed)) {
+    // finite: scaled onto the limit; infinite or NaN: stopped
+    const finite = v2 < Number.POSITIVE_INFINITY;
+    const scale = finite ? maxSpeed / Math.sqrt(v2) : 0;
+    state[s + S_VX] = finite ? scale * vx : 0;
+    state[s + S_VY] = finite ? scale * vy : 0;
+  }
+  if (!(w <= maxW && w >= -maxW)) state[s + S_W] = w > maxW ? maxW : w < -maxW ? -maxW : 0;
+}
+
+/**
  * Velocity update of one substep for the awake bodies: gravity, forces and damping.
  * Kinematic bodies keep their velocity. Damping is the implicit form v / (1 + h c), stable for any c.
  */
@@ -36,7 +55,6 @@ export function integrateVelocities(
   const fy = bodies.fy;
   const torque = bodies.torque;
   const maxW = MAX_ROTATION_PER_SUBSTEP / h;
-  const maxV2 = maxLinearSpeed * maxLinearSpeed;
   for (let i = 0; i < awakeCount; i++) {
     const b = awake[i];
     if (kind[b] !== DYNAMIC) continue;
@@ -44,37 +62,42 @@ export function integrateVelocities(
     const m = invMass[b];
     const g = gravityScale[b];
     const linearFactor = 1 / (1 + h * linearDamping[b]);
-    let vx = (state[s + S_VX] + h * (g * gx + m * fx[b])) * linearFactor;
-    let vy = (state[s + S_VY] + h * (g * gy + m * fy[b])) * linearFactor;
-    let w = (state[s + S_W] + h * invInertia[b] * torque[b]) / (1 + h * angularDamping[b]);
-    const v2 = vx * vx + vy * vy;
-    if (v2 > maxV2) {
-      const scale = maxLinearSpeed / Math.sqrt(v2);
-      vx *= scale;
-      vy *= scale;
-    }
-    w = Math.max(-maxW, Math.min(w, maxW));
+    const vx = (state[s + S_VX] + h * (g * gx + m * fx[b])) * linearFactor;
+    const vy = (state[s + S_VY] + h * (g * gy + m * fy[b])) * linearFactor;
+    const w = (state[s + S_W] + h * invInertia[b] * torque[b]) / (1 + h * angularDamping[b]);
     state[s + S_VX] = vx;
     state[s + S_VY] = vy;
     state[s + S_W] = w;
+    clampVelocity(state, s, maxLinearSpeed, maxW);
   }
 }
 
 /**
  * Position update of one substep: accumulates the translation of the centre of mass and the rotation
  * since the step began. The rotation is a (cos, sin) pair turned by the angle h w and renormalised.
+ * A dynamic body's velocity is clamped to the limits again first: constraints that cannot all hold
+ * (a network of joints locked against itself) can leave the solver with any velocity, and a body
+ * moved by it would leave the finite numbers within a few steps.
  */
 export function integratePositions(
-  state: Float64Array,
+  bodies: BodyStore,
   awake: Int32Array,
   awakeCount: number,
   h: number,
+  maxLinearSpeed: number,
 ): void {
+  const state = bodies.state;
+  const kind = bodies.kind;
+  const maxW = MAX_ROTATION_PER_SUBSTEP / h;
   for (let i = 0; i < awakeCount; i++) {
-    const s = awake[i] * STATE_STRIDE;
+    const b = awake[i];
+    const s = b * STATE_STRIDE;
+    if (kind[b] === DYNAMIC) clampVelocity(state, s, maxLinearSpeed, maxW);
+    const vx = state[s + S_VX];
+    const vy = state[s + S_VY];
     const w = state[s + S_W];
-    state[s + S_DPX] += h * state[s + S_VX];
-    state[s + S_DPY] += h * state[s + S_VY];
+    state[s + S_DPX] += h * vx;
+    state[s + S_DPY] += h * vy;
     // rotate by the angle h w: its cosine and sine from their Taylor series (|h w| <= pi / 4, so the
     // angle is exact to ~1e-5 at the clamp and to rounding at everyday speeds), then renormalise
     const x = h * w;

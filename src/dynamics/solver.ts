@@ -6,7 +6,7 @@ import {
   JOINT_HERTZ,
   MAX_ROTATION_PER_SUBSTEP,
 } from '../core/settings';
-import { integratePositions, integrateVelocities } from './body-solver';
+import { clampVelocity, integratePositions, integrateVelocities } from './body-solver';
 import {
   DYNAMIC,
   FLAG_ALLOW_SLEEP,
@@ -155,14 +155,21 @@ export function solve(core: WorldCore, dt: number): void {
     if (i === 0) tree.factor(ctx);
     tree.project(state, treeBias);
     hinges.solve(state, jointSoft, true);
-    for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, true);
+    for (let j = 0; j < iterativeCount; j++) {
+      iterative[j].solve(ctx, true);
+      // a row weighed with the tree's mass moved only its own two bodies: the tree carries it on
+      if (iterative[j].treeAxialMass > 0) tree.project(state, treeBias);
+    }
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, treeBias);
-    integratePositions(state, awake, awakeCount, h);
+    integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed);
     tree.factor(ctx);
     tree.project(state, 0);
     hinges.solve(state, jointSoft, false);
-    for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, false);
+    for (let j = 0; j < iterativeCount; j++) {
+      iterative[j].solve(ctx, false);
+      if (iterative[j].treeAxialMass > 0) tree.project(state, 0);
+    }
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, 0);
   }
@@ -225,9 +232,13 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
   const sleepSpeed = core.settings.sleepSpeed;
   const enableSleep = core.enableSleep;
   const continuous = core.enableContinuous;
+  // the relax pass after the last position update is not bounded by the substeps' clamps
+  const maxW = (MAX_ROTATION_PER_SUBSTEP * core.subSteps) / dt;
+  const maxSpeed = core.settings.maxLinearSpeed;
   for (let i = 0, n = core.awakeCount; i < n; i++) {
     const b = awake[i];
     const s = b * STATE_STRIDE;
+    if (bodies.kind[b] === DYNAMIC) clampVelocity(state, s, maxSpeed, maxW);
     const dqc = state[s + S_DQC];
     const dqs = state[s + S_DQS];
     const q0c = bodies.qc[b];
