@@ -1,6 +1,7 @@
 import { IntList } from '../collision/int-list';
-import { computeShapeBounds } from '../geometry/bounds';
+import { packedBounds } from '../geometry/bounds';
 import { minExtent } from '../geometry/extent';
+import { PACK_STRIDE } from '../geometry/packed';
 import { makeProxy, makeShapeProxy, type ShapeProxy } from '../geometry/shape-proxy';
 import { getSweepTransform, makeSweep } from '../geometry/sweep';
 import { makeTOIOutput, type TOIInput, timeOfImpact } from '../geometry/toi';
@@ -131,7 +132,7 @@ function sweepAgainst(
     if ((shapes.flags[s] & SHAPE_SENSOR) !== 0) continue;
     const g = shapes.geometry[s]!;
     // swept box: the shape's box at the start of the step united with its box now
-    computeShapeBounds(g, start, bounds);
+    packedBounds(shapes.packed, s * PACK_STRIDE, start.q.c, start.q.s, start.p.x, start.p.y, bounds);
     const minX = Math.min(bounds.minX, shapes.minX[s]);
     const minY = Math.min(bounds.minY, shapes.minY[s]);
     const maxX = Math.max(bounds.maxX, shapes.maxX[s]);
