@@ -387,7 +387,9 @@ export class DynamicTree {
     this.parent[sibling] = node;
     this.parent[leaf] = node;
     this.replaceChild(oldParent, sibling, node);
-    this.refitUp(node);
+    // the new node has no box yet to compare: balance it, then walk up from its parent
+    this.balance(node);
+    this.refitUp(oldParent);
   }
 
   private removeLeaf(leaf: number): void {
@@ -463,10 +465,30 @@ export class DynamicTree {
     );
   }
 
-  /** Rebalances and refits from `index` up to the root. */
+  /**
+   * Rebalances and refits from `index` up towards the root. Stops at the first node whose box and
+   * height come out unchanged: nothing above it changes then (only an optional perimeter swap
+   * further up is forgone), and most moves of a proxy end a few levels up instead of at the root.
+   */
   private refitUp(index: number): void {
+    const box = this.box;
     while (index !== NULL) {
+      const o = 4 * index;
+      const minX = box[o];
+      const minY = box[o + 1];
+      const maxX = box[o + 2];
+      const maxY = box[o + 3];
+      const height = this.height[index];
       this.balance(index);
+      if (
+        box[o] === minX &&
+        box[o + 1] === minY &&
+        box[o + 2] === maxX &&
+        box[o + 3] === maxY &&
+        this.height[index] === height
+      ) {
+        return;
+      }
       index = this.parent[index];
     }
   }
