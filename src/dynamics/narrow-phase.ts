@@ -1,4 +1,4 @@
-import { collide } from '../geometry/manifold';
+import { collide, collideCirclePackedPolygon } from '../geometry/manifold';
 import {
   clearCollideHints,
   collidePackedPolygons,
@@ -40,6 +40,25 @@ function collideShapes(
   const shapes = core.shapes;
   const kindA = shapes.kind[shapeA];
   const kindB = shapes.kind[shapeB];
+  if ((kindA === CIRCLE && kindB === POLYGON) || (kindA === POLYGON && kindB === CIRCLE)) {
+    // the circle is the pair function's A, as in collide()
+    const swap = kindA === POLYGON;
+    collideCirclePackedPolygon(
+      shapes.packed,
+      (swap ? shapeB : shapeA) * PACK_STRIDE,
+      core.fillTransform(swap ? bodyB : bodyA, core.xfA),
+      (swap ? shapeA : shapeB) * PACK_STRIDE,
+      core.fillTransform(swap ? bodyA : bodyB, core.xfB),
+      speculativeDistance,
+      manifold,
+    );
+    if (swap) {
+      manifold.normalX = -manifold.normalX;
+      manifold.normalY = -manifold.normalY;
+    }
+    clearCollideHints();
+    return;
+  }
   if ((kindA !== POLYGON && kindB !== POLYGON) || kindA === CIRCLE || kindB === CIRCLE) {
     collide(
       shapes.geometry[shapeA]!,

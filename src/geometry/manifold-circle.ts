@@ -1,4 +1,12 @@
 import type { Transform } from '../math/vec2';
+import {
+  PACK_COUNT,
+  PACK_RADIUS,
+  PACK_STRIDE,
+  PACK_VERTEX_STRIDE,
+  PACK_VERTICES,
+  packGeometry,
+} from './packed';
 import type { Capsule, Circle, Manifold, Polygon, Segment } from './types';
 
 /**
@@ -146,9 +154,79 @@ export function collideCircleSegment(
 }
 
 /**
- * Circle against a (rounded) polygon, in the polygon's frame: the edge of largest separation, then
- * the Voronoi region of the centre along that edge (first vertex, face, second vertex).
+ * Circle against a (rounded) polygon, both packed in `data` (see packed.ts; the circle's one vertex
+ * is its centre), in the polygon's frame: the edge of largest separation, then the Voronoi region of
+ * the centre along that edge (first vertex, face, second vertex).
  */
+export function collideCirclePackedPolygon(
+  data: Float64Array,
+  baseA: number,
+  xfA: Transform,
+  baseB: number,
+  xfB: Transform,
+  speculativeDistance: number,
+  out: Manifold,
+): void {
+  out.pointCount = 0;
+  const qa = xfA.q;
+  const qb = xfB.q;
+  const ax = data[baseA + PACK_VERTICES];
+  const ay = data[baseA + PACK_VERTICES + 1];
+  const rA = data[baseA + PACK_RADIUS];
+  const wx = qa.c * ax - qa.s * ay + xfA.p.x - xfB.p.x;
+  const wy = qa.s * ax + qa.c * ay + xfA.p.y - xfB.p.y;
+  const cx = qb.c * wx + qb.s * wy;
+  const cy = -qb.s * wx + qb.c * wy;
+  const n = data[baseB + PACK_COUNT];
+  const rB = data[baseB + PACK_RADIUS];
+  const radius = rA + rB;
+  let edge = 0;
+  let maxSeparation = Number.NEGATIVE_INFINITY;
+  for (let i = 0, k = baseB + PACK_VERTICES; i < n; i++, k += PACK_VERTEX_STRIDE) {
+    const s = data[k + 2] * (cx - data[k]) + data[k + 3] * (cy - data[k + 1]);
+    if (s > maxSeparation) {
+      maxSeparation = s;
+      edge = i;
+    }
+  }
+  if (maxSeparation - radius >= speculativeDistance) return;
+  const k1 = baseB + PACK_VERTICES + PACK_VERTEX_STRIDE * edge;
+  const k2 = baseB + PACK_VERTICES + PACK_VERTEX_STRIDE * (edge + 1 === n ? 0 : edge + 1);
+  const v1x = data[k1];
+  const v1y = data[k1 + 1];
+  const v2x = data[k2];
+  const v2y = data[k2 + 1];
+  let ux = data[k1 + 2];
+  let uy = data[k1 + 3];
+  // closest point of the core polygon and the core distance (face case by default)
+  let px = cx - maxSeparation * ux;
+  let py = cy - maxSeparation * uy;
+  let distance = maxSeparation;
+  if (maxSeparation > 0) {
+    const ex = v2x - v1x;
+    const ey = v2y - v1y;
+    // beyond the first vertex, beyond the second, or neither (the face)
+    const vertex = (cx - v1x) * ex + (cy - v1y) * ey < 0 ? 1 : (cx - v2x) * ex + (cy - v2y) * ey > 0 ? 2 : 0;
+    if (vertex !== 0) {
+      const vx = vertex === 1 ? v1x : v2x;
+      const vy = vertex === 1 ? v1y : v2y;
+      const dx = cx - vx;
+      const dy = cy - vy;
+      distance = Math.sqrt(dx * dx + dy * dy);
+      ux = dx / distance;
+      uy = dy / distance;
+      px = vx;
+      py = vy;
+    }
+  }
+  const separation = distance - radius;
+  if (!(separation < speculativeDistance)) return;
+  writeFromB(xfB, ux, uy, cx - rA * ux, cy - rA * uy, px + rB * ux, py + rB * uy, separation, out);
+}
+
+const scratch = new Float64Array(2 * PACK_STRIDE);
+
+/** Circle against a (rounded) polygon, from geometry objects: packs them (see above). */
 export function collideCirclePolygon(
   a: Circle,
   xfA: Transform,
@@ -157,62 +235,7 @@ export function collideCirclePolygon(
   speculativeDistance: number,
   out: Manifold,
 ): void {
-  out.pointCount = 0;
-  const qa = xfA.q;
-  const qb = xfB.q;
-  const wx = qa.c * a.center.x - qa.s * a.center.y + xfA.p.x - xfB.p.x;
-  const wy = qa.s * a.center.x + qa.c * a.center.y + xfA.p.y - xfB.p.y;
-  const cx = qb.c * wx + qb.s * wy;
-  const cy = -qb.s * wx + qb.c * wy;
-  const v = b.vertices;
-  const normals = b.normals;
-  const n = b.count;
-  const radius = a.radius + b.radius;
-  let edge = 0;
-  let maxSeparation = Number.NEGATIVE_INFINITY;
-  for (let i = 0; i < n; i++) {
-    const s = normals[i].x * (cx - v[i].x) + normals[i].y * (cy - v[i].y);
-    if (s > maxSeparation) {
-      maxSeparation = s;
-      edge = i;
-    }
-  }
-  if (maxSeparation - radius >= speculativeDistance) return;
-  const v1 = v[edge];
-  const v2 = v[edge + 1 === n ? 0 : edge + 1];
-  let ux = normals[edge].x;
-  let uy = normals[edge].y;
-  // closest point of the core polygon and the core distance (face case by default)
-  let px = cx - maxSeparation * ux;
-  let py = cy - maxSeparation * uy;
-  let distance = maxSeparation;
-  if (maxSeparation > 0) {
-    const ex = v2.x - v1.x;
-    const ey = v2.y - v1.y;
-    const vertex =
-      (cx - v1.x) * ex + (cy - v1.y) * ey < 0 ? v1 : (cx - v2.x) * ex + (cy - v2.y) * ey > 0 ? v2 : null;
-    if (vertex !== null) {
-      const dx = cx - vertex.x;
-      const dy = cy - vertex.y;
-      distance = Math.sqrt(dx * dx + dy * dy);
-      ux = dx / distance;
-      uy = dy / distance;
-      px = vertex.x;
-      py = vertex.y;
-    }
-  }
-  const separation = distance - radius;
-  if (!(separation < speculativeDistance)) return;
-  const rB = b.radius;
-  writeFromB(
-    xfB,
-    ux,
-    uy,
-    cx - a.radius * ux,
-    cy - a.radius * uy,
-    px + rB * ux,
-    py + rB * uy,
-    separation,
-    out,
-  );
+  packGeometry(a, scratch, 0);
+  packGeometry(b, scratch, PACK_STRIDE);
+  collideCirclePackedPolygon(scratch, 0, xfA, PACK_STRIDE, xfB, speculativeDistance, out);
 }

@@ -12,6 +12,7 @@ import type { Geometry, Manifold } from './types';
 export { collideCapsuleSegment, collideCapsules } from './manifold-capsule';
 export {
   collideCircleCapsule,
+  collideCirclePackedPolygon,
   collideCirclePolygon,
   collideCircleSegment,
   collideCircles,
