@@ -235,7 +235,7 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
   const enableSleep = core.enableSleep;
   const continuous = core.enableContinuous;
   // the relax pass after the last position update is not bounded by the substeps' clamps
-  const maxW = (MAX_ROTATION_PER_SUBSTEP * core.subSteps) / dt;
+  const maxW = MAX_ROTATION_PER_SUBSTEP / (dt / core.subSteps);
   const maxSpeed = core.settings.maxLinearSpeed;
   for (let i = 0, n = core.awakeCount; i < n; i++) {
     const b = awake[i];

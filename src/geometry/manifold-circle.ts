@@ -226,7 +226,7 @@ export function collideCirclePackedPolygon(
 
 const scratch = new Float64Array(2 * PACK_STRIDE);
 
-/** Circle against a (rounded) polygon, from geometry objects: packs them (see above). */
+/** Circle against a (rounded) polygon, from geometry objects (`collide`): packs them (see above). */
 export function collideCirclePolygon(
   a: Circle,
   xfA: Transform,

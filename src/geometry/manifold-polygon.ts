@@ -425,7 +425,7 @@ export function collidePackedPolygons(
 
 const scratch = new Float64Array(2 * PACK_STRIDE);
 
-/** Polygon, capsule or segment against a polygon, from geometry objects (queries, tests). */
+/** Polygon, capsule or segment against a polygon, from geometry objects (`collide`; the narrow phase reads the shape store's records). */
 export function collidePolygonLike(
   a: Polygon | Capsule | Segment,
   xfA: Transform,

@@ -113,9 +113,48 @@ const KIND_OF_TYPE: Record<string, number> = {
   polygon: POLYGON,
 };
 
-/** True for geometry built by `Shape.*` (frozen, with a matching type and kind). */
+function isFinitePoint(p: unknown): boolean {
+  if (typeof p !== 'object' || p === null) return false;
+  const v = p as { x?: unknown; y?: unknown };
+  return Number.isFinite(v.x) && Number.isFinite(v.y);
+}
+
+function isPointList(list: unknown, count: number): boolean {
+  return Array.isArray(list) && list.length === count && list.every(isFinitePoint);
+}
+
+function isLength(value: unknown, min: number): boolean {
+  return typeof value === 'number' && Number.isFinite(value) && value >= min;
+}
+
+/**
+ * True for geometry as `Shape.*` builds it: frozen, with a matching type and kind, finite coordinates
+ * and at most MAX_POLYGON_VERTICES vertices. The shape store packs it into a fixed-size record, so a
+ * hand-made object that passed on type alone could write past it or bring NaN into the world.
+ */
 export function isGeometry(value: unknown): value is Geometry {
   if (typeof value !== 'object' || value === null || !Object.isFrozen(value)) return false;
-  const g = value as { type?: unknown; kind?: unknown };
-  return typeof g.type === 'string' && KIND_OF_TYPE[g.type] === g.kind;
+  const g = value as Record<string, unknown>;
+  if (typeof g.type !== 'string' || KIND_OF_TYPE[g.type] !== g.kind) return false;
+  switch (g.kind) {
+    case CIRCLE:
+      return isFinitePoint(g.center) && isLength(g.radius, Number.MIN_VALUE);
+    case CAPSULE:
+      return isFinitePoint(g.center1) && isFinitePoint(g.center2) && isLength(g.radius, Number.MIN_VALUE);
+    case SEGMENT:
+      return isFinitePoint(g.point1) && isFinitePoint(g.point2);
+    default: {
+      const count = g.count;
+      return (
+        typeof count === 'number' &&
+        Number.isInteger(count) &&
+        count >= 3 &&
+        count <= MAX_POLYGON_VERTICES &&
+        isPointList(g.vertices, count) &&
+        isPointList(g.normals, count) &&
+        isFinitePoint(g.centroid) &&
+        isLength(g.radius, 0)
+      );
+    }
+  }
 }

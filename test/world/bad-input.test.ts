@@ -86,6 +86,21 @@ describe('bad input', () => {
       /unknown option "sensor"/,
     );
     rejects(world, () => box.createShape({ type: 'circle', radius: 1 } as never), /geometry/);
+    // hand-made geometry that looks like Shape's: too many vertices (the packed record holds 8), NaN
+    const box1 = Shape.box(0.5, 0.5);
+    const ring = Array.from({ length: 10 }, (_, i) => ({
+      x: Math.cos((i * Math.PI) / 5),
+      y: Math.sin((i * Math.PI) / 5),
+    }));
+    const tooMany = Object.freeze({ ...box1, count: 10, vertices: ring, normals: ring });
+    rejects(world, () => box.createShape(tooMany as never), /geometry/);
+    const nanVertex = Object.freeze({
+      ...box1,
+      vertices: [{ x: Number.NaN, y: 0 }, ...box1.vertices.slice(1)],
+    });
+    rejects(world, () => box.createShape(nanVertex as never), /geometry/);
+    const nanCircle = Object.freeze({ ...Shape.circle(1), center: { x: 0, y: Number.NaN } });
+    rejects(world, () => box.createShape(nanCircle as never), /geometry/);
     expect(box.shapes.length).toBe(1);
   });
 
