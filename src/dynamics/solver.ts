@@ -84,7 +84,7 @@ function prepareJoints(core: WorldCore, h: number): void {
     }
     active.push(joint);
   }
-  core.jointTree.build(active, bodies.kind, bodies.invMass, bodies.invInertia);
+  core.jointTree.build(active, bodies.kind, bodies.invMass, bodies.invInertia, core.jointEpoch);
   core.hingeBatch.prepare(active, core.jointTree.iterative, ctx);
 }
 

@@ -77,6 +77,11 @@ export class WorldCore {
   readonly activeJoints: Joint[] = [];
   /** the exact solver of the active joints that form a forest */
   readonly jointTree = new JointTree();
+  /**
+   * Counts the changes that can alter the joint tree's choice besides the set of active joints
+   * (which the tree compares itself): joint setters and bodies' mass, inertia or type (updateMass).
+   */
+  jointEpoch = 0;
   /** the plain hinges of the current step, solved from flat arrays */
   readonly hingeBatch = new HingeBatch();
   readonly jointContext: JointContext = {
@@ -168,6 +173,7 @@ export class WorldCore {
 
   /** Mass, centre of mass, inertia and extents of a body from its shapes. */
   updateMass(b: number): void {
+    this.jointEpoch++;
     const bodies = this.bodies;
     const shapes = this.shapes;
     const kind = bodies.kind[b];

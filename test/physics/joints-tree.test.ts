@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { createRandom } from '../../scenes/random';
-import { type Body, type Joint, Shape, World } from '../../src/index';
+import { type Body, type Joint, type RevoluteJoint, Shape, stateHash, World } from '../../src/index';
 
 const DT = 1 / 60;
 
@@ -324,5 +324,85 @@ describe('joint tree', () => {
       expect(speed).toBeLessThanOrEqual(400 * (1 + 1e-12));
       expect(turnRate).toBeLessThanOrEqual(maxTurnRate * (1 + 1e-12));
     }
+  });
+
+  it('the cached tree choice gives the same bits as a fresh choice every step, through every change', () => {
+    // Between changes the joint tree keeps its last choice of tree joints; this world is stepped once
+    // as is and once with a fresh choice forced before every step, through joint setters, new and
+    // destroyed joints and bodies, type, mass and fixed-rotation changes, sleep and store growth.
+    const script = (world: World, fresh: boolean): number[] => {
+      const step = (n: number) => {
+        for (let i = 0; i < n; i++) {
+          if (fresh) (world as unknown as { core: { jointEpoch: number } }).core.jointEpoch++;
+          world.step(DT);
+        }
+      };
+      const ground = world.createBody();
+      ground.createShape(Shape.box(20, 0.5, { x: 0, y: -0.5 }));
+      const links: Body[] = [];
+      const hinges: RevoluteJoint[] = [];
+      let prev = ground;
+      for (let i = 0; i < 12; i++) {
+        const link = world.createBody({ type: 'dynamic', position: { x: 0.5 + i, y: 8 } });
+        link.createShape(Shape.box(0.5, 0.1));
+        hinges.push(
+          world.createJoint({ type: 'revolute', bodyA: prev, bodyB: link, anchor: { x: i, y: 8 } }),
+        );
+        links.push(link);
+        prev = link;
+      }
+      const hinge = hinges[4];
+      const hashes: number[] = [];
+      const mark = () => hashes.push(stateHash(world));
+      step(30);
+      mark();
+      // the swinging chain bends this hinge well past 0.05 rad: the limit acts at once
+      hinge.enableLimit(true);
+      hinge.setLimits(-0.05, 0.05);
+      step(20);
+      mark();
+      links[6].setType('static');
+      step(20);
+      links[6].setType('dynamic');
+      step(20);
+      mark();
+      links[8].setFixedRotation(true);
+      step(20);
+      links[8].setFixedRotation(false);
+      links[2].createShape(Shape.circle(0.3), { density: 20 });
+      step(20);
+      mark();
+      const rope = world.createJoint({
+        type: 'distance',
+        bodyA: links[11],
+        bodyB: ground,
+        localAnchorA: { x: 0, y: 0 },
+        localAnchorB: { x: 12, y: 0 },
+      });
+      step(20);
+      world.destroyJoint(rope);
+      world.destroyBody(links[10]);
+      step(20);
+      mark();
+      for (let i = 0; i < 200; i++) {
+        const b = world.createBody({
+          type: 'dynamic',
+          position: { x: -15 + (i % 20) * 0.6, y: 1 + Math.floor(i / 20) },
+        });
+        b.createShape(Shape.circle(0.25));
+      }
+      step(40);
+      mark();
+      world.enableSleep = true;
+      step(300);
+      mark();
+      links[1].applyLinearImpulse({ x: 0, y: 5 }, links[1].worldCenter);
+      step(30);
+      mark();
+      return hashes;
+    };
+    const cached = script(new World({ enableSleep: false }), false);
+    const fresh = script(new World({ enableSleep: false }), true);
+    expect(cached).toEqual(fresh);
   });
 });

@@ -140,7 +140,20 @@ export class JointTree {
    * Chooses the tree joints among `active` (all prepared) and orders the nodes. Joints chosen get
    * `inTree = true`, the others false.
    */
-  build(active: readonly Joint[], kind: Uint8Array, invMass: Float64Array, invInertia: Float64Array): void {
+  build(
+    active: readonly Joint[],
+    kind: Uint8Array,
+    invMass: Float64Array,
+    invInertia: Float64Array,
+    epoch: number,
+  ): void {
+    // the choice reads only the joints' options and the bodies' kinds and masses: while none of
+    // them changed (the world's joint epoch) and the same joints are active, the last build holds
+    if (this.isBuilt(active, kind.length, epoch)) return;
+    this.builtEpoch = epoch;
+    this.builtBodyCapacity = kind.length;
+    this.builtActive.length = 0;
+    for (const joint of active) this.builtActive.push(joint);
     if (this.root.length < kind.length) {
       this.root = growI32(this.root, kind.length);
       this.cluster = growI32(this.cluster, kind.length);
@@ -227,6 +240,19 @@ export class JointTree {
       this.closureNodeA[c] = this.bodyNode[this.closures[c].bodyA.slot];
       this.closureNodeB[c] = this.bodyNode[this.closures[c].bodyB.slot];
     }
+  }
+
+  /** the joint epoch, body capacity and active joints of the last build */
+  private builtEpoch = -1;
+  private builtBodyCapacity = -1;
+  private readonly builtActive: Joint[] = [];
+
+  private isBuilt(active: readonly Joint[], bodyCapacity: number, epoch: number): boolean {
+    if (epoch !== this.builtEpoch || bodyCapacity !== this.builtBodyCapacity) return false;
+    const built = this.builtActive;
+    if (active.length !== built.length) return false;
+    for (let j = 0; j < active.length; j++) if (active[j] !== built[j]) return false;
+    return true;
   }
 
   /**

@@ -110,6 +110,7 @@ export abstract class Joint {
   protected changing(): void {
     this.check();
     if (this.world.core.locked) throw new FulcrumError('the world is locked during step()');
+    this.world.core.jointEpoch++;
     this.world.core.wake(this.bodyA.slot);
     this.world.core.wake(this.bodyB.slot);
   }
