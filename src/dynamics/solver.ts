@@ -84,8 +84,14 @@ function prepareJoints(core: WorldCore, h: number): void {
     }
     active.push(joint);
   }
-  core.jointTree.build(active, bodies.kind, bodies.invMass, bodies.invInertia, core.jointEpoch);
-  core.hingeBatch.prepare(active, core.jointTree.iterative, ctx);
+  const rebuilt = core.jointTree.build(
+    active,
+    bodies.kind,
+    bodies.invMass,
+    bodies.invInertia,
+    core.jointEpoch,
+  );
+  core.hingeBatch.prepare(active, core.jointTree.iterative, ctx, rebuilt);
 }
 
 /** Builds one constraint per touching solid contact that has an awake body. */
@@ -175,7 +181,7 @@ export function solve(core: WorldCore, dt: number): void {
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, 0);
   }
-  hinges.store();
+  hinges.store(ctx);
   applyRestitution(cc, state, settings.restitutionThreshold);
   const contacts = core.contacts;
   storeImpulses(

@@ -329,12 +329,13 @@ describe('joint tree', () => {
   it('the cached tree choice gives the same bits as a fresh choice every step, through every change', () => {
     // Between changes the joint tree keeps its last choice of tree joints; this world is stepped once
     // as is and once with a fresh choice forced before every step, through joint setters, new and
-    // destroyed joints and bodies, type, mass and fixed-rotation changes, sleep and store growth.
+    // destroyed joints and bodies, type, mass and fixed-rotation changes, sleep, store growth and a
+    // change of time step; the hinges' reaction forces are compared too.
     const script = (world: World, fresh: boolean): number[] => {
-      const step = (n: number) => {
+      const step = (n: number, dt = DT) => {
         for (let i = 0; i < n; i++) {
           if (fresh) (world as unknown as { core: { jointEpoch: number } }).core.jointEpoch++;
-          world.step(DT);
+          world.step(dt);
         }
       };
       const ground = world.createBody();
@@ -352,8 +353,34 @@ describe('joint tree', () => {
         prev = link;
       }
       const hinge = hinges[4];
+      // and a 5 x 5 net of hinges (16 loops: solved by Gauss-Seidel, in the hinge batch)
+      const net: Body[] = [];
+      const netHinges: RevoluteJoint[] = [];
+      for (let r = 0; r < 5; r++) {
+        for (let c = 0; c < 5; c++) {
+          const node = world.createBody({ type: 'dynamic', position: { x: -10 + c, y: 10 - r } });
+          node.createShape(Shape.circle(0.2));
+          net.push(node);
+          const anchor = { x: -10 + c, y: 10 - r };
+          if (c > 0)
+            netHinges.push(
+              world.createJoint({ type: 'revolute', bodyA: net[net.length - 2], bodyB: node, anchor }),
+            );
+          if (r > 0)
+            netHinges.push(
+              world.createJoint({ type: 'revolute', bodyA: net[net.length - 6], bodyB: node, anchor }),
+            );
+          if (r === 0 && (c === 0 || c === 4))
+            world.createJoint({ type: 'revolute', bodyA: ground, bodyB: node, anchor });
+        }
+      }
       const hashes: number[] = [];
-      const mark = () => hashes.push(stateHash(world));
+      const mark = () => {
+        hashes.push(stateHash(world));
+        for (const joint of [hinges[1], hinges[7], netHinges[3], netHinges[20]]) {
+          hashes.push(joint.getReactionForce().y);
+        }
+      };
       step(30);
       mark();
       // the swinging chain bends this hinge well past 0.05 rad: the limit acts at once
@@ -361,6 +388,11 @@ describe('joint tree', () => {
       hinge.setLimits(-0.05, 0.05);
       step(20);
       mark();
+      netHinges[5].setMaxMotorTorque(5);
+      netHinges[5].enableMotor(true);
+      netHinges[5].setMotorSpeed(2);
+      step(20);
+      netHinges[5].enableMotor(false);
       links[6].setType('static');
       step(20);
       links[6].setType('dynamic');
@@ -398,6 +430,8 @@ describe('joint tree', () => {
       mark();
       links[1].applyLinearImpulse({ x: 0, y: 5 }, links[1].worldCenter);
       step(30);
+      mark();
+      step(10, DT / 2);
       mark();
       return hashes;
     };

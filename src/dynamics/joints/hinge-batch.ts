@@ -21,6 +21,40 @@ export const H_LY = 11;
 export const HINGE_STRIDE = 12;
 
 /**
+ * Writes a joint's step data (H_MA .. H_DCY) to `d` at `base`: its bodies' inverse masses, the
+ * anchors relative to the centres of mass, world-oriented, and the centres' offset. The local
+ * anchors (on A, then on B) are read from `anchors` at `k`.
+ */
+export function writeStepData(
+  ctx: JointContext,
+  a: number,
+  b: number,
+  anchors: Float64Array,
+  k: number,
+  d: Float64Array,
+  base: number,
+): void {
+  d[base + H_MA] = ctx.invMass[a];
+  d[base + H_IA] = ctx.invInertia[a];
+  d[base + H_MB] = ctx.invMass[b];
+  d[base + H_IB] = ctx.invInertia[b];
+  let c = ctx.qc[a];
+  let s = ctx.qs[a];
+  let x = anchors[k] - ctx.lcx[a];
+  let y = anchors[k + 1] - ctx.lcy[a];
+  d[base + H_RAX0] = c * x - s * y;
+  d[base + H_RAY0] = s * x + c * y;
+  c = ctx.qc[b];
+  s = ctx.qs[b];
+  x = anchors[k + 2] - ctx.lcx[b];
+  y = anchors[k + 3] - ctx.lcy[b];
+  d[base + H_RBX0] = c * x - s * y;
+  d[base + H_RBY0] = s * x + c * y;
+  d[base + H_DCX] = ctx.cx[b] - ctx.cx[a];
+  d[base + H_DCY] = ctx.cy[b] - ctx.cy[a];
+}
+
+/**
  * The plain hinges of a step (revolute joints without limit, motor or spring, solved by Gauss-Seidel:
  * grids, cloth, loops the tree does not take) packed into flat arrays, like the contacts: a joint
  * object keeps each field in its own heap box and is reached through a virtual call, which made
@@ -33,6 +67,8 @@ export class HingeBatch {
   data = new Float64Array(0);
   /** body A and body B of each hinge */
   ids = new Int32Array(0);
+  /** each hinge's local anchors on A and B (x, y, x, y), relative to the bodies' origins */
+  anchors = new Float64Array(0);
   readonly joints: Joint[] = [];
   /** the active joints that are not in the batch, in their order */
   readonly otherActive: Joint[] = [];
@@ -41,9 +77,23 @@ export class HingeBatch {
 
   /**
    * Prepares the step's joints (`active`, after the tree's build): the plain hinges are packed here,
-   * the others prepare themselves. The other joints keep their order.
+   * the others prepare themselves. The other joints keep their order. Unless the tree chose anew
+   * (`rebuilt`), the hinges are the same as last step and only their step data is refreshed, from
+   * the anchors kept here, with last step's impulses.
    */
-  prepare(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext): void {
+  prepare(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext, rebuilt: boolean): void {
+    if (rebuilt) this.classify(active, iterative, ctx);
+    else {
+      const d = this.data;
+      const ids = this.ids;
+      for (let i = 0; i < this.count; i++) {
+        writeStepData(ctx, ids[2 * i], ids[2 * i + 1], this.anchors, 4 * i, d, i * HINGE_STRIDE);
+      }
+    }
+    for (const joint of this.otherActive) joint.prepare(ctx);
+  }
+
+  private classify(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext): void {
     this.joints.length = 0;
     this.otherIterative.length = 0;
     this.otherActive.length = 0;
@@ -57,15 +107,17 @@ export class HingeBatch {
       const capacity = Math.max(64, 2 * n);
       this.data = growF64(this.data, capacity * HINGE_STRIDE);
       this.ids = growI32(this.ids, capacity * 2);
+      this.anchors = growF64(this.anchors, capacity * 4);
     }
-    for (let i = 0; i < n; i++) this.joints[i].packHinge(ctx, this.data, i * HINGE_STRIDE, this.ids, 2 * i);
-    for (const joint of this.otherActive) joint.prepare(ctx);
+    for (let i = 0; i < n; i++) {
+      this.joints[i].packHinge(ctx, this.data, i * HINGE_STRIDE, this.ids, 2 * i, this.anchors, 4 * i);
+    }
     this.count = n;
   }
 
   /** Returns the accumulated impulses to the joints (warm start of the next step, reaction force). */
-  store(): void {
-    for (let i = 0; i < this.count; i++) this.joints[i].unpackHinge(this.data, i * HINGE_STRIDE);
+  store(ctx: JointContext): void {
+    for (let i = 0; i < this.count; i++) this.joints[i].unpackHinge(this.data, i * HINGE_STRIDE, ctx);
   }
 
   /**

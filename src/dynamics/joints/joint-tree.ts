@@ -137,8 +137,8 @@ export class JointTree {
   private visited = new Uint8Array(32);
 
   /**
-   * Chooses the tree joints among `active` (all prepared) and orders the nodes. Joints chosen get
-   * `inTree = true`, the others false.
+   * Chooses the tree joints among `active` and orders the nodes. Joints chosen get `inTree = true`,
+   * the others false. Returns false when the last choice still holds and nothing was redone.
    */
   build(
     active: readonly Joint[],
@@ -146,10 +146,10 @@ export class JointTree {
     invMass: Float64Array,
     invInertia: Float64Array,
     epoch: number,
-  ): void {
+  ): boolean {
     // the choice reads only the joints' options and the bodies' kinds and masses: while none of
     // them changed (the world's joint epoch) and the same joints are active, the last build holds
-    if (this.isBuilt(active, kind.length, epoch)) return;
+    if (this.isBuilt(active, kind.length, epoch)) return false;
     this.builtEpoch = epoch;
     this.builtBodyCapacity = kind.length;
     this.builtActive.length = 0;
@@ -240,6 +240,7 @@ export class JointTree {
       this.closureNodeA[c] = this.bodyNode[this.closures[c].bodyA.slot];
       this.closureNodeB[c] = this.bodyNode[this.closures[c].bodyB.slot];
     }
+    return true;
   }
 
   /** the joint epoch, body capacity and active joints of the last build */

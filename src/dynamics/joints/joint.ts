@@ -15,14 +15,16 @@ import {
   H_RBX0,
   H_RBY0,
   HINGE_STRIDE,
+  writeStepData,
 } from './hinge-batch';
 import type { JointContext } from './joint-context';
 import { relativeAngle } from './joint-math';
 
 export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'mouse' | 'motor';
 
-/** prepareBase's body data and anchors, in the hinge batch's layout */
+/** prepareBase's body data and anchors, in the hinge batch's layout, and its local anchors */
 const baseScratch = new Float64Array(HINGE_STRIDE);
+const anchorScratch = new Float64Array(4);
 
 /**
  * Base of every joint: two bodies, an anchor on each (in the body's frame, relative to its origin),
@@ -135,7 +137,7 @@ export abstract class Joint {
   /** @internal Reads body data and anchors for this step. */
   prepareBase(ctx: JointContext): void {
     const d = baseScratch;
-    this.writeBase(ctx, d, 0);
+    this.writeBase(ctx, d, 0, anchorScratch, 0);
     this.mA = d[H_MA];
     this.iA = d[H_IA];
     this.mB = d[H_MB];
@@ -154,32 +156,25 @@ export abstract class Joint {
 
   /**
    * Sets the bodies' slots and the step's 1/h, and writes the step's body data and anchors in the
-   * hinge batch's layout (H_MA .. H_DCY) to `d` at `base`.
+   * hinge batch's layout (H_MA .. H_DCY) to `d` at `base`; the local anchors go to `anchors` at `k`.
    */
-  private writeBase(ctx: JointContext, d: Float64Array, base: number): void {
+  private writeBase(
+    ctx: JointContext,
+    d: Float64Array,
+    base: number,
+    anchors: Float64Array,
+    k: number,
+  ): void {
     const a = this.bodyA.slot;
     const b = this.bodyB.slot;
     this.a = a;
     this.b = b;
     this.invH = ctx.invH;
-    d[base + H_MA] = ctx.invMass[a];
-    d[base + H_IA] = ctx.invInertia[a];
-    d[base + H_MB] = ctx.invMass[b];
-    d[base + H_IB] = ctx.invInertia[b];
-    let c = ctx.qc[a];
-    let s = ctx.qs[a];
-    let x = this.localAnchorAx - ctx.lcx[a];
-    let y = this.localAnchorAy - ctx.lcy[a];
-    d[base + H_RAX0] = c * x - s * y;
-    d[base + H_RAY0] = s * x + c * y;
-    c = ctx.qc[b];
-    s = ctx.qs[b];
-    x = this.localAnchorBx - ctx.lcx[b];
-    y = this.localAnchorBy - ctx.lcy[b];
-    d[base + H_RBX0] = c * x - s * y;
-    d[base + H_RBY0] = s * x + c * y;
-    d[base + H_DCX] = ctx.cx[b] - ctx.cx[a];
-    d[base + H_DCY] = ctx.cy[b] - ctx.cy[a];
+    anchors[k] = this.localAnchorAx;
+    anchors[k + 1] = this.localAnchorAy;
+    anchors[k + 2] = this.localAnchorBx;
+    anchors[k + 3] = this.localAnchorBy;
+    writeStepData(ctx, a, b, anchors, k, d, base);
   }
 
   /** Rotates the anchors by the bodies' rotation so far in the step and measures their separation. */
@@ -332,14 +327,22 @@ export abstract class Joint {
    * @internal Prepares the step of a plain hinge (instead of prepare) and writes its solver data to
    * the hinge batch (see HingeBatch).
    */
-  packHinge(ctx: JointContext, data: Float64Array, base: number, ids: Int32Array, k: number): void {
-    this.writeBase(ctx, data, base);
+  packHinge(
+    ctx: JointContext,
+    data: Float64Array,
+    base: number,
+    ids: Int32Array,
+    k: number,
+    anchors: Float64Array,
+    anchorBase: number,
+  ): void {
+    this.writeBase(ctx, data, base, anchors, anchorBase);
     ids[k] = this.a;
     ids[k + 1] = this.b;
   }
 
-  /** @internal Takes back the point impulse the hinge batch accumulated. */
-  unpackHinge(_data: Float64Array, _base: number): void {}
+  /** @internal Takes back the point impulse the hinge batch accumulated (and the step's 1/h). */
+  unpackHinge(_data: Float64Array, _base: number, _ctx: JointContext): void {}
 
   /** @internal */
   abstract prepare(ctx: JointContext): void;

@@ -172,8 +172,16 @@ export class RevoluteJoint extends Joint {
   }
 
   /** @internal */
-  override packHinge(ctx: JointContext, data: Float64Array, base: number, ids: Int32Array, k: number): void {
-    super.packHinge(ctx, data, base, ids, k);
+  override packHinge(
+    ctx: JointContext,
+    data: Float64Array,
+    base: number,
+    ids: Int32Array,
+    k: number,
+    anchors: Float64Array,
+    anchorBase: number,
+  ): void {
+    super.packHinge(ctx, data, base, ids, k, anchors, anchorBase);
     // as prepare does for disabled rows
     this.springImpulse = 0;
     this.motorImpulse = 0;
@@ -184,9 +192,10 @@ export class RevoluteJoint extends Joint {
   }
 
   /** @internal */
-  override unpackHinge(data: Float64Array, base: number): void {
+  override unpackHinge(data: Float64Array, base: number, ctx: JointContext): void {
     this.linearX = data[base + H_LX];
     this.linearY = data[base + H_LY];
+    this.invH = ctx.invH;
   }
 
   /** @internal */
