@@ -1,14 +1,12 @@
-import { collide, collideCirclePackedPolygon } from '../geometry/manifold';
+import { collidePacked } from '../geometry/manifold';
 import {
-  clearCollideHints,
-  collidePackedPolygons,
   lastSeparatingAxis,
   referenceOwnerOfId,
   setReferenceHint,
   setSeparatingAxisHint,
 } from '../geometry/manifold-polygon';
 import { PACK_STRIDE } from '../geometry/packed';
-import { CIRCLE, type Manifold, type ManifoldPoint, POLYGON } from '../geometry/types';
+import type { Manifold, ManifoldPoint } from '../geometry/types';
 import { DYNAMIC, FLAG_AWAKE } from './body-store';
 import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
 import { SHAPE_SENSOR, shouldShapesCollide } from './shape-store';
@@ -23,81 +21,6 @@ class Point implements ManifoldPoint {
 }
 
 const manifold: Manifold = { normalX: 0, normalY: 0, pointCount: 0, points: [new Point(), new Point()] };
-
-/**
- * The manifold of two shapes into `manifold`. A polygon against a polygon, capsule or segment (the
- * piles that dominate large scenes) reads the packed geometry and the bodies' transforms directly;
- * the other pairs go through `collide`.
- */
-function collideShapes(
-  core: WorldCore,
-  shapeA: number,
-  bodyA: number,
-  shapeB: number,
-  bodyB: number,
-  speculativeDistance: number,
-): void {
-  const shapes = core.shapes;
-  const kindA = shapes.kind[shapeA];
-  const kindB = shapes.kind[shapeB];
-  if ((kindA === CIRCLE && kindB === POLYGON) || (kindA === POLYGON && kindB === CIRCLE)) {
-    // the circle is the pair function's A, as in collide()
-    const swap = kindA === POLYGON;
-    collideCirclePackedPolygon(
-      shapes.packed,
-      (swap ? shapeB : shapeA) * PACK_STRIDE,
-      core.fillTransform(swap ? bodyB : bodyA, core.xfA),
-      (swap ? shapeA : shapeB) * PACK_STRIDE,
-      core.fillTransform(swap ? bodyA : bodyB, core.xfB),
-      speculativeDistance,
-      manifold,
-    );
-    if (swap) {
-      manifold.normalX = -manifold.normalX;
-      manifold.normalY = -manifold.normalY;
-    }
-    clearCollideHints();
-    return;
-  }
-  if ((kindA !== POLYGON && kindB !== POLYGON) || kindA === CIRCLE || kindB === CIRCLE) {
-    collide(
-      shapes.geometry[shapeA]!,
-      core.fillTransform(bodyA, core.xfA),
-      shapes.geometry[shapeB]!,
-      core.fillTransform(bodyB, core.xfB),
-      speculativeDistance,
-      manifold,
-    );
-    return;
-  }
-  // as in collide(): the polygon is the pair function's B unless both are polygons
-  const swap = kindA === POLYGON && kindB !== POLYGON;
-  const s = swap ? shapeB : shapeA;
-  const t = swap ? shapeA : shapeB;
-  const a = swap ? bodyB : bodyA;
-  const b = swap ? bodyA : bodyB;
-  const bodies = core.bodies;
-  collidePackedPolygons(
-    shapes.packed,
-    s * PACK_STRIDE,
-    bodies.qc[a],
-    bodies.qs[a],
-    bodies.px[a],
-    bodies.py[a],
-    t * PACK_STRIDE,
-    bodies.qc[b],
-    bodies.qs[b],
-    bodies.px[b],
-    bodies.py[b],
-    speculativeDistance,
-    manifold,
-  );
-  if (swap) {
-    manifold.normalX = -manifold.normalX;
-    manifold.normalY = -manifold.normalY;
-  }
-  clearCollideHints();
-}
 
 /** Creates contacts for the new overlapping pairs the broad phase found, in (shapeA, shapeB) order. */
 export function createNewContacts(core: WorldCore): void {
@@ -153,7 +76,17 @@ export function updateContacts(core: WorldCore): void {
     const k0 = c * 2;
     setReferenceHint(contacts.pointCount[c] > 0 ? referenceOwnerOfId(contacts.pointId[k0]) : -1);
     setSeparatingAxisHint(contacts.separatingAxis[c]);
-    collideShapes(core, shapeA, bodyA, shapeB, bodyB, sensor ? 0 : speculative);
+    collidePacked(
+      shapes.kind[shapeA],
+      shapes.kind[shapeB],
+      shapes.packed,
+      shapeA * PACK_STRIDE,
+      core.fillTransform(bodyA, core.xfA),
+      shapeB * PACK_STRIDE,
+      core.fillTransform(bodyB, core.xfB),
+      sensor ? 0 : speculative,
+      manifold,
+    );
     const count = manifold.pointCount;
     contacts.separatingAxis[c] = lastSeparatingAxis();
     if (!sensor) {

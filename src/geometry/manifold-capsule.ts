@@ -1,7 +1,8 @@
 import type { Transform } from '../math/vec2';
 import { LINEAR_SLOP } from './constants';
+import { PACK_RADIUS, PACK_VERTEX_STRIDE, PACK_VERTICES } from './packed';
 import { closestBetweenSegments, makeSegmentClosest } from './segment-distance';
-import type { Capsule, Manifold, Segment } from './types';
+import type { Manifold } from './types';
 
 /** sin of the largest angle between two capsules that still rest on each other with two points */
 const PARALLEL_SIN = 0.1;
@@ -144,60 +145,30 @@ function collideRoundedSegments(
   out.pointCount = 1;
 }
 
-export function collideCapsules(
-  a: Capsule,
+/** Two rounded segments (capsules, or a capsule and a segment of radius 0), packed in `data`. */
+export function collideRoundedSegmentPair(
+  data: Float64Array,
+  baseA: number,
   xfA: Transform,
-  b: Capsule,
+  baseB: number,
   xfB: Transform,
   speculativeDistance: number,
   out: Manifold,
 ): void {
-  const p1 = a.center1;
-  const p2 = a.center2;
-  const q1 = b.center1;
-  const q2 = b.center2;
+  const a = baseA + PACK_VERTICES;
+  const b = baseB + PACK_VERTICES;
   collideRoundedSegments(
-    p1.x,
-    p1.y,
-    p2.x,
-    p2.y,
-    a.radius,
+    data[a],
+    data[a + 1],
+    data[a + PACK_VERTEX_STRIDE],
+    data[a + PACK_VERTEX_STRIDE + 1],
+    data[baseA + PACK_RADIUS],
     xfA,
-    q1.x,
-    q1.y,
-    q2.x,
-    q2.y,
-    b.radius,
-    xfB,
-    speculativeDistance,
-    out,
-  );
-}
-
-export function collideCapsuleSegment(
-  a: Capsule,
-  xfA: Transform,
-  b: Segment,
-  xfB: Transform,
-  speculativeDistance: number,
-  out: Manifold,
-): void {
-  const p1 = a.center1;
-  const p2 = a.center2;
-  const q1 = b.point1;
-  const q2 = b.point2;
-  collideRoundedSegments(
-    p1.x,
-    p1.y,
-    p2.x,
-    p2.y,
-    a.radius,
-    xfA,
-    q1.x,
-    q1.y,
-    q2.x,
-    q2.y,
-    0,
+    data[b],
+    data[b + 1],
+    data[b + PACK_VERTEX_STRIDE],
+    data[b + PACK_VERTEX_STRIDE + 1],
+    data[baseB + PACK_RADIUS],
     xfB,
     speculativeDistance,
     out,

@@ -1,13 +1,6 @@
 import type { Transform } from '../math/vec2';
-import {
-  PACK_COUNT,
-  PACK_RADIUS,
-  PACK_STRIDE,
-  PACK_VERTEX_STRIDE,
-  PACK_VERTICES,
-  packGeometry,
-} from './packed';
-import type { Capsule, Circle, Manifold, Polygon, Segment } from './types';
+import { PACK_COUNT, PACK_RADIUS, PACK_VERTEX_STRIDE, PACK_VERTICES } from './packed';
+import type { Manifold } from './types';
 
 /**
  * Writes a one-point manifold given in B's local frame: `ux, uy` is the unit normal from B to A
@@ -37,10 +30,12 @@ function writeFromB(
   out.pointCount = 1;
 }
 
+/** Two circles, packed in `data` (see packed.ts: a circle's one vertex is its centre). */
 export function collideCircles(
-  a: Circle,
+  data: Float64Array,
+  baseA: number,
   xfA: Transform,
-  b: Circle,
+  baseB: number,
   xfB: Transform,
   speculativeDistance: number,
   out: Manifold,
@@ -48,14 +43,20 @@ export function collideCircles(
   out.pointCount = 0;
   const qa = xfA.q;
   const qb = xfB.q;
-  const ax = qa.c * a.center.x - qa.s * a.center.y + xfA.p.x;
-  const ay = qa.s * a.center.x + qa.c * a.center.y + xfA.p.y;
-  const bx = qb.c * b.center.x - qb.s * b.center.y + xfB.p.x;
-  const by = qb.s * b.center.x + qb.c * b.center.y + xfB.p.y;
+  const cax = data[baseA + PACK_VERTICES];
+  const cay = data[baseA + PACK_VERTICES + 1];
+  const cbx = data[baseB + PACK_VERTICES];
+  const cby = data[baseB + PACK_VERTICES + 1];
+  const rA = data[baseA + PACK_RADIUS];
+  const rB = data[baseB + PACK_RADIUS];
+  const ax = qa.c * cax - qa.s * cay + xfA.p.x;
+  const ay = qa.s * cax + qa.c * cay + xfA.p.y;
+  const bx = qb.c * cbx - qb.s * cby + xfB.p.x;
+  const by = qb.s * cbx + qb.c * cby + xfB.p.y;
   const dx = bx - ax;
   const dy = by - ay;
   const distance = Math.sqrt(dx * dx + dy * dy);
-  const separation = distance - a.radius - b.radius;
+  const separation = distance - rA - rB;
   if (!(separation < speculativeDistance)) return;
   // concentric circles have no preferred direction: push along +y
   const nx = distance > 0 ? dx / distance : 0;
@@ -63,32 +64,41 @@ export function collideCircles(
   out.normalX = nx;
   out.normalY = ny;
   const point = out.points[0];
-  point.x = 0.5 * (ax + a.radius * nx + bx - b.radius * nx);
-  point.y = 0.5 * (ay + a.radius * ny + by - b.radius * ny);
+  point.x = 0.5 * (ax + rA * nx + bx - rB * nx);
+  point.y = 0.5 * (ay + rA * ny + by - rB * ny);
   point.separation = separation;
   point.id = 0;
   out.pointCount = 1;
 }
 
-/** Circle against the rounded segment q1-q2 (radius rB) of shape B, in B's frame. */
-function circleVsRoundedSegment(
-  a: Circle,
+/**
+ * A circle against a capsule or segment (the rounded segment between B's two packed vertices, radius
+ * B's radius: 0 for a segment), in B's frame.
+ */
+export function collideCircleRoundedSegment(
+  data: Float64Array,
+  baseA: number,
   xfA: Transform,
-  q1x: number,
-  q1y: number,
-  q2x: number,
-  q2y: number,
-  rB: number,
+  baseB: number,
   xfB: Transform,
   speculativeDistance: number,
   out: Manifold,
 ): void {
   out.pointCount = 0;
+  const k = baseB + PACK_VERTICES;
+  const q1x = data[k];
+  const q1y = data[k + 1];
+  const q2x = data[k + PACK_VERTEX_STRIDE];
+  const q2y = data[k + PACK_VERTEX_STRIDE + 1];
+  const rB = data[baseB + PACK_RADIUS];
+  const rA = data[baseA + PACK_RADIUS];
+  const centerX = data[baseA + PACK_VERTICES];
+  const centerY = data[baseA + PACK_VERTICES + 1];
   // circle centre in B's frame
   const qa = xfA.q;
   const qb = xfB.q;
-  const wx = qa.c * a.center.x - qa.s * a.center.y + xfA.p.x - xfB.p.x;
-  const wy = qa.s * a.center.x + qa.c * a.center.y + xfA.p.y - xfB.p.y;
+  const wx = qa.c * centerX - qa.s * centerY + xfA.p.x - xfB.p.x;
+  const wy = qa.s * centerX + qa.c * centerY + xfA.p.y - xfB.p.y;
   const cx = qb.c * wx + qb.s * wy;
   const cy = -qb.s * wx + qb.c * wy;
   const ex = q2x - q1x;
@@ -101,7 +111,7 @@ function circleVsRoundedSegment(
   const dx = cx - px;
   const dy = cy - py;
   const distance = Math.sqrt(dx * dx + dy * dy);
-  const separation = distance - a.radius - rB;
+  const separation = distance - rA - rB;
   if (!(separation < speculativeDistance)) return;
   let ux: number;
   let uy: number;
@@ -114,43 +124,7 @@ function circleVsRoundedSegment(
     ux = ey / len;
     uy = -ex / len;
   }
-  writeFromB(
-    xfB,
-    ux,
-    uy,
-    cx - a.radius * ux,
-    cy - a.radius * uy,
-    px + rB * ux,
-    py + rB * uy,
-    separation,
-    out,
-  );
-}
-
-export function collideCircleCapsule(
-  a: Circle,
-  xfA: Transform,
-  b: Capsule,
-  xfB: Transform,
-  speculativeDistance: number,
-  out: Manifold,
-): void {
-  const p = b.center1;
-  const q = b.center2;
-  circleVsRoundedSegment(a, xfA, p.x, p.y, q.x, q.y, b.radius, xfB, speculativeDistance, out);
-}
-
-export function collideCircleSegment(
-  a: Circle,
-  xfA: Transform,
-  b: Segment,
-  xfB: Transform,
-  speculativeDistance: number,
-  out: Manifold,
-): void {
-  const p = b.point1;
-  const q = b.point2;
-  circleVsRoundedSegment(a, xfA, p.x, p.y, q.x, q.y, 0, xfB, speculativeDistance, out);
+  writeFromB(xfB, ux, uy, cx - rA * ux, cy - rA * uy, px + rB * ux, py + rB * uy, separation, out);
 }
 
 /**
@@ -158,7 +132,7 @@ export function collideCircleSegment(
  * is its centre), in the polygon's frame: the edge of largest separation, then the Voronoi region of
  * the centre along that edge (first vertex, face, second vertex).
  */
-export function collideCirclePackedPolygon(
+export function collideCirclePolygon(
   data: Float64Array,
   baseA: number,
   xfA: Transform,
@@ -222,20 +196,4 @@ export function collideCirclePackedPolygon(
   const separation = distance - radius;
   if (!(separation < speculativeDistance)) return;
   writeFromB(xfB, ux, uy, cx - rA * ux, cy - rA * uy, px + rB * ux, py + rB * uy, separation, out);
-}
-
-const scratch = new Float64Array(2 * PACK_STRIDE);
-
-/** Circle against a (rounded) polygon, from geometry objects (`collide`): packs them (see above). */
-export function collideCirclePolygon(
-  a: Circle,
-  xfA: Transform,
-  b: Polygon,
-  xfB: Transform,
-  speculativeDistance: number,
-  out: Manifold,
-): void {
-  packGeometry(a, scratch, 0);
-  packGeometry(b, scratch, PACK_STRIDE);
-  collideCirclePackedPolygon(scratch, 0, xfA, PACK_STRIDE, xfB, speculativeDistance, out);
 }

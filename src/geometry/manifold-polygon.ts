@@ -1,15 +1,8 @@
 import type { Transform } from '../math/vec2';
 import { LINEAR_SLOP, REFERENCE_FACE_TOLERANCE } from './constants';
-import {
-  PACK_COUNT,
-  PACK_RADIUS,
-  PACK_STRIDE,
-  PACK_VERTEX_STRIDE,
-  PACK_VERTICES,
-  packGeometry,
-} from './packed';
+import { PACK_COUNT, PACK_RADIUS, PACK_VERTEX_STRIDE, PACK_VERTICES } from './packed';
 import { closestBetweenSegments, makeSegmentClosest } from './segment-distance';
-import { type Capsule, MAX_POLYGON_VERTICES, type Manifold, type Polygon, type Segment } from './types';
+import { MAX_POLYGON_VERTICES, type Manifold } from './types';
 
 /*
  * Polygon contacts (capsules and segments act as 2-vertex rounded polygons here), all computed in
@@ -400,57 +393,23 @@ function writeManifold(c: number, s: number, px: number, py: number, count: numb
 
 /**
  * The manifold of two packed polygon-like shapes (polygons, capsules, segments; see packed.ts), both
- * records in `data`, A at transform (ac, as, ax, ay) and B at (bc, bs, bx, by).
+ * records in `data`, A placed at `xfA` and B at `xfB`.
  */
 export function collidePackedPolygons(
   data: Float64Array,
   baseA: number,
-  ac: number,
-  as: number,
-  ax: number,
-  ay: number,
-  baseB: number,
-  bc: number,
-  bs: number,
-  bx: number,
-  by: number,
-  speculativeDistance: number,
-  out: Manifold,
-): void {
-  loadPolygonA(data, baseA);
-  setRelative(ac, as, ax, ay, bc, bs, bx, by);
-  loadPolygonB(data, baseB);
-  writeManifold(ac, as, ax, ay, collideLoaded(speculativeDistance), out);
-}
-
-const scratch = new Float64Array(2 * PACK_STRIDE);
-
-/** Polygon, capsule or segment against a polygon, from geometry objects (`collide`; the narrow phase reads the shape store's records). */
-export function collidePolygonLike(
-  a: Polygon | Capsule | Segment,
   xfA: Transform,
-  b: Polygon,
+  baseB: number,
   xfB: Transform,
   speculativeDistance: number,
   out: Manifold,
 ): void {
-  packGeometry(a, scratch, 0);
-  packGeometry(b, scratch, PACK_STRIDE);
-  const qa = xfA.q;
-  const qb = xfB.q;
-  collidePackedPolygons(
-    scratch,
-    0,
-    qa.c,
-    qa.s,
-    xfA.p.x,
-    xfA.p.y,
-    PACK_STRIDE,
-    qb.c,
-    qb.s,
-    xfB.p.x,
-    xfB.p.y,
-    speculativeDistance,
-    out,
-  );
+  const ac = xfA.q.c;
+  const as = xfA.q.s;
+  const ax = xfA.p.x;
+  const ay = xfA.p.y;
+  loadPolygonA(data, baseA);
+  setRelative(ac, as, ax, ay, xfB.q.c, xfB.q.s, xfB.p.x, xfB.p.y);
+  loadPolygonB(data, baseB);
+  writeManifold(ac, as, ax, ay, collideLoaded(speculativeDistance), out);
 }

@@ -1,23 +1,9 @@
 import type { Transform } from '../math/vec2';
-import { collideCapsuleSegment, collideCapsules } from './manifold-capsule';
-import {
-  collideCircleCapsule,
-  collideCirclePolygon,
-  collideCircleSegment,
-  collideCircles,
-} from './manifold-circle';
-import { clearCollideHints, collidePolygonLike } from './manifold-polygon';
+import { collideRoundedSegmentPair } from './manifold-capsule';
+import { collideCirclePolygon, collideCircleRoundedSegment, collideCircles } from './manifold-circle';
+import { clearCollideHints, collidePackedPolygons } from './manifold-polygon';
+import { PACK_STRIDE, packGeometry } from './packed';
 import type { Geometry, Manifold } from './types';
-
-export { collideCapsuleSegment, collideCapsules } from './manifold-capsule';
-export {
-  collideCircleCapsule,
-  collideCirclePackedPolygon,
-  collideCirclePolygon,
-  collideCircleSegment,
-  collideCircles,
-} from './manifold-circle';
-export { collidePolygonLike } from './manifold-polygon';
 
 /*
  * Contact ids (ManifoldPoint.id), stable while the same features touch:
@@ -28,23 +14,26 @@ export { collidePolygonLike } from './manifold-polygon';
  *   bits 0-3 the vertex of the incident shape the point came from, bits 4-7 the reference edge,
  *   bit 8 set when the reference face belongs to the function's B argument, bit 9 set for a
  *   vertex-vertex point of separated cores (bits 4-7 then hold the reference vertex).
- * When collide() swaps its arguments (see SWAPPED), "A" and "B" above are the swapped ones; a pair of
+ * When collidePacked swaps its arguments (see SWAPPED), "A" and "B" above are the swapped ones; a pair of
  * shapes always comes in the same order, so the ids stay stable.
  */
 
+/** A pair routine: both shapes packed in `data` (see packed.ts), at `baseA` and `baseB`. */
 type PairFunction = (
-  a: Geometry,
+  data: Float64Array,
+  baseA: number,
   xfA: Transform,
-  b: Geometry,
+  baseB: number,
   xfB: Transform,
   speculativeDistance: number,
   out: Manifold,
 ) => void;
 
 function collideNothing(
-  _a: Geometry,
+  _data: Float64Array,
+  _baseA: number,
   _xfA: Transform,
-  _b: Geometry,
+  _baseB: number,
   _xfB: Transform,
   _speculativeDistance: number,
   out: Manifold,
@@ -54,32 +43,59 @@ function collideNothing(
 
 /** Indexed by kindA * 4 + kindB (CIRCLE 0, CAPSULE 1, SEGMENT 2, POLYGON 3). */
 const PAIRS: readonly PairFunction[] = [
-  collideCircles as PairFunction, // circle-circle
-  collideCircleCapsule as PairFunction, // circle-capsule
-  collideCircleSegment as PairFunction, // circle-segment
-  collideCirclePolygon as PairFunction, // circle-polygon
-  collideCircleCapsule as PairFunction, // capsule-circle (swapped)
-  collideCapsules as PairFunction, // capsule-capsule
-  collideCapsuleSegment as PairFunction, // capsule-segment
-  collidePolygonLike as PairFunction, // capsule-polygon
-  collideCircleSegment as PairFunction, // segment-circle (swapped)
-  collideCapsuleSegment as PairFunction, // segment-capsule (swapped)
+  collideCircles, // circle-circle
+  collideCircleRoundedSegment, // circle-capsule
+  collideCircleRoundedSegment, // circle-segment
+  collideCirclePolygon, // circle-polygon
+  collideCircleRoundedSegment, // capsule-circle (swapped)
+  collideRoundedSegmentPair, // capsule-capsule
+  collideRoundedSegmentPair, // capsule-segment
+  collidePackedPolygons, // capsule-polygon
+  collideCircleRoundedSegment, // segment-circle (swapped)
+  collideRoundedSegmentPair, // segment-capsule (swapped)
   collideNothing, // segment-segment: segments live on static or kinematic bodies only
-  collidePolygonLike as PairFunction, // segment-polygon
-  collideCirclePolygon as PairFunction, // polygon-circle (swapped)
-  collidePolygonLike as PairFunction, // polygon-capsule (swapped)
-  collidePolygonLike as PairFunction, // polygon-segment (swapped)
-  collidePolygonLike as PairFunction, // polygon-polygon
+  collidePackedPolygons, // segment-polygon
+  collideCirclePolygon, // polygon-circle (swapped)
+  collidePackedPolygons, // polygon-capsule (swapped)
+  collidePackedPolygons, // polygon-segment (swapped)
+  collidePackedPolygons, // polygon-polygon
 ];
 
 /** 1 where the pair function takes the shapes in the other order: call it swapped, flip the normal. */
 const SWAPPED: readonly number[] = [0, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 0];
 
 /**
- * Contact manifold of shape `a` at `xfA` and shape `b` at `xfB`: world normal from A to B, up to two
- * world points halfway between the surfaces, each with its separation (< 0 overlapping) and feature
- * id. Only points with separation < speculativeDistance are kept. Allocation free.
+ * Contact manifold of the shapes of kinds `kindA` and `kindB` packed in `data` at `baseA` and `baseB`
+ * (see packed.ts: the narrow phase passes the shape store's records), placed at `xfA` and `xfB`:
+ * world normal from A to B, up to two world points halfway between the surfaces, each with its
+ * separation (< 0 overlapping) and feature id. Only points with separation < speculativeDistance are
+ * kept. Allocation free.
  */
+export function collidePacked(
+  kindA: number,
+  kindB: number,
+  data: Float64Array,
+  baseA: number,
+  xfA: Transform,
+  baseB: number,
+  xfB: Transform,
+  speculativeDistance: number,
+  out: Manifold,
+): void {
+  const pair = kindA * 4 + kindB;
+  if (SWAPPED[pair] === 1) {
+    PAIRS[pair](data, baseB, xfB, baseA, xfA, speculativeDistance, out);
+    out.normalX = -out.normalX;
+    out.normalY = -out.normalY;
+  } else {
+    PAIRS[pair](data, baseA, xfA, baseB, xfB, speculativeDistance, out);
+  }
+  clearCollideHints();
+}
+
+const scratch = new Float64Array(2 * PACK_STRIDE);
+
+/** collidePacked for geometry objects: packs them first. */
 export function collide(
   a: Geometry,
   xfA: Transform,
@@ -88,13 +104,7 @@ export function collide(
   speculativeDistance: number,
   out: Manifold,
 ): void {
-  const pair = a.kind * 4 + b.kind;
-  if (SWAPPED[pair] === 1) {
-    PAIRS[pair](b, xfB, a, xfA, speculativeDistance, out);
-    out.normalX = -out.normalX;
-    out.normalY = -out.normalY;
-  } else {
-    PAIRS[pair](a, xfA, b, xfB, speculativeDistance, out);
-  }
-  clearCollideHints();
+  packGeometry(a, scratch, 0);
+  packGeometry(b, scratch, PACK_STRIDE);
+  collidePacked(a.kind, b.kind, scratch, 0, xfA, PACK_STRIDE, xfB, speculativeDistance, out);
 }
