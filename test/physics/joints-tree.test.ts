@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { createRandom } from '../../scenes/random';
+import { createRandom, type Random } from '../../scenes/random';
 import { type Body, type Joint, type RevoluteJoint, Shape, stateHash, World } from '../../src/index';
 
 const DT = 1 / 60;
@@ -117,6 +117,48 @@ function momentum(bodies: Body[]) {
   return { px, py };
 }
 
+/** A world without sleep: a ground and 30 random boxes and discs (densities 0.1 to 30). */
+function randomBodies(rng: Random): { world: World; ground: Body; bodies: Body[] } {
+  const world = new World({ enableSleep: false });
+  const ground = world.createBody({ position: { x: 0, y: -0.5 } });
+  ground.createShape(Shape.box(20, 0.5));
+  const bodies: Body[] = [];
+  for (let i = 0; i < 30; i++) {
+    const body = world.createBody({
+      type: 'dynamic',
+      position: { x: rng.range(-5, 5), y: rng.range(1, 10) },
+      angle: rng.range(-3, 3),
+    });
+    if (rng.nextFloat() < 0.5) {
+      body.createShape(Shape.box(rng.range(0.1, 0.5), rng.range(0.1, 0.5)), {
+        density: 10 ** rng.range(-1, 1.5),
+      });
+    } else {
+      body.createShape(Shape.circle(rng.range(0.1, 0.4)), { density: 10 ** rng.range(-1, 1.5) });
+    }
+    bodies.push(body);
+  }
+  return { world, ground, bodies };
+}
+
+/** Steps 300 times: whether every body stayed finite, and the largest speed and turn rate seen. */
+function runNetwork(world: World, bodies: Body[]): { finite: boolean; speed: number; turnRate: number } {
+  let finite = true;
+  let speed = 0;
+  let turnRate = 0;
+  for (let s = 0; s < 300; s++) {
+    world.step(DT);
+    for (const body of bodies) {
+      const p = body.position;
+      const v = body.linearVelocity;
+      if (!Number.isFinite(p.x + p.y + v.x + v.y + body.angularVelocity)) finite = false;
+      speed = Math.max(speed, Math.hypot(v.x, v.y));
+      turnRate = Math.max(turnRate, Math.abs(body.angularVelocity));
+    }
+  }
+  return { finite, speed, turnRate };
+}
+
 describe('joint tree', () => {
   it('free random forests of hinges, welds, rods and sliders: no joint drifts apart; momentum is conserved', () => {
     for (const seed of [1, 2, 3]) {
@@ -163,25 +205,8 @@ describe('joint tree', () => {
     // world stays finite (without the warm-start guard some of them end in NaN).
     for (let seed = 1; seed <= 20; seed++) {
       const rng = createRandom(seed);
-      const world = new World({ enableSleep: false });
-      const ground = world.createBody({ position: { x: 0, y: -0.5 } });
-      ground.createShape(Shape.box(20, 0.5));
-      const bodies: Body[] = [ground];
-      for (let i = 0; i < 30; i++) {
-        const body = world.createBody({
-          type: 'dynamic',
-          position: { x: rng.range(-5, 5), y: rng.range(1, 10) },
-          angle: rng.range(-3, 3),
-        });
-        if (rng.nextFloat() < 0.5) {
-          body.createShape(Shape.box(rng.range(0.1, 0.5), rng.range(0.1, 0.5)), {
-            density: 10 ** rng.range(-1, 1.5),
-          });
-        } else {
-          body.createShape(Shape.circle(rng.range(0.1, 0.4)), { density: 10 ** rng.range(-1, 1.5) });
-        }
-        bodies.push(body);
-      }
+      const { world, ground, bodies: dynamic } = randomBodies(rng);
+      const bodies = [ground, ...dynamic];
       for (let k = 0; k < 35; k++) {
         const a = rng.nextFloat() < 0.15 ? 0 : 1 + rng.int(30);
         const b = 1 + rng.int(30);
@@ -191,16 +216,7 @@ describe('joint tree', () => {
         const anchor = { x: 0.5 * (pa.x + pb.x), y: 0.5 * (pa.y + pb.y) };
         world.createJoint({ type: 'revolute', bodyA: bodies[a], bodyB: bodies[b], anchor });
       }
-      let finite = true;
-      for (let s = 0; s < 300; s++) {
-        world.step(DT);
-        for (const body of bodies) {
-          const p = body.position;
-          const v = body.linearVelocity;
-          if (!Number.isFinite(p.x + p.y + v.x + v.y + body.angularVelocity)) finite = false;
-        }
-      }
-      expect(finite).toBe(true);
+      expect(runNetwork(world, dynamic).finite).toBe(true);
     }
   });
 
@@ -214,26 +230,9 @@ describe('joint tree', () => {
     const maxTurnRate = (0.25 * Math.PI * 4) / DT; // the world's rotation limit per substep, 4 substeps
     for (let seed = 1; seed <= 20; seed++) {
       const rng = createRandom(seed);
-      const world = new World({ enableSleep: false });
-      const ground = world.createBody({ position: { x: 0, y: -0.5 } });
-      ground.createShape(Shape.box(20, 0.5));
+      const { world, ground, bodies } = randomBodies(rng);
       const bar = world.createBody({ type: 'kinematic', position: { x: 0, y: 6 }, angularVelocity: 0.5 });
       bar.createShape(Shape.box(1, 0.1));
-      const bodies: Body[] = [];
-      for (let i = 0; i < 30; i++) {
-        const body = world.createBody({
-          type: 'dynamic',
-          position: { x: rng.range(-5, 5), y: rng.range(1, 10) },
-          angle: rng.range(-3, 3),
-        });
-        const density = 10 ** rng.range(-1, 1.5);
-        if (rng.nextFloat() < 0.5) {
-          body.createShape(Shape.box(rng.range(0.1, 0.5), rng.range(0.1, 0.5)), { density });
-        } else {
-          body.createShape(Shape.circle(rng.range(0.1, 0.4)), { density });
-        }
-        bodies.push(body);
-      }
       for (let k = 0; k < 40; k++) {
         const a = rng.nextFloat() < 0.15 ? (rng.nextFloat() < 0.5 ? ground : bar) : bodies[rng.int(30)];
         const b = bodies[rng.int(30)];
@@ -307,19 +306,7 @@ describe('joint tree', () => {
             });
         }
       }
-      let finite = true;
-      let speed = 0;
-      let turnRate = 0;
-      for (let s = 0; s < 300; s++) {
-        world.step(DT);
-        for (const body of bodies) {
-          const p = body.position;
-          const v = body.linearVelocity;
-          if (!Number.isFinite(p.x + p.y + v.x + v.y + body.angularVelocity)) finite = false;
-          speed = Math.max(speed, Math.hypot(v.x, v.y));
-          turnRate = Math.max(turnRate, Math.abs(body.angularVelocity));
-        }
-      }
+      const { finite, speed, turnRate } = runNetwork(world, bodies);
       expect(finite).toBe(true);
       expect(speed).toBeLessThanOrEqual(400 * (1 + 1e-12));
       expect(turnRate).toBeLessThanOrEqual(maxTurnRate * (1 + 1e-12));
