@@ -152,6 +152,7 @@ export class HingeBatch {
       const vBx = state[sb + S_VX];
       const vBy = state[sb + S_VY];
       const wB = state[sb + S_W];
+      // `+ 0` as the revolute joint's warm start adds its (here zero) axial impulse: the same bits
       const nAx = vAx - mA * px;
       const nAy = vAy - mA * py;
       const nwA = wA - iA * (rAx * py - rAy * px + 0);
