@@ -1,6 +1,16 @@
 import type { Transform } from '../math/vec2';
 import { LINEAR_SLOP, REFERENCE_FACE_TOLERANCE } from './constants';
-import { PACK_COUNT, PACK_RADIUS, PACK_VERTEX_STRIDE, PACK_VERTICES } from './packed';
+import {
+  PACK_COUNT,
+  PACK_RADIUS,
+  PACK_RECTANGLE,
+  PACK_VERTEX_STRIDE,
+  PACK_VERTICES,
+  RECT_CX,
+  RECT_CY,
+  RECT_H0,
+  RECT_H1,
+} from './packed';
 import { closestBetweenSegments, makeSegmentClosest } from './segment-distance';
 import { MAX_POLYGON_VERTICES, type Manifold } from './types';
 
@@ -231,6 +241,15 @@ function setLocalPoint(index: number, x: number, y: number, coreSeparation: numb
   localIds[index] = id;
 }
 
+/** Whether B's face of largest separation is the reference face (step 2 and the reference hint). */
+function referenceFromB(separationA: number, separationB: number): boolean {
+  return referenceHint === 1
+    ? !(separationA > separationB + STICKY_REFERENCE_TOLERANCE)
+    : referenceHint === 0
+      ? separationB > separationA + STICKY_REFERENCE_TOLERANCE
+      : separationB > separationA + REFERENCE_FACE_TOLERANCE;
+}
+
 /** The manifold of the loaded polyA and polyB in `local`; returns the point count. */
 function collideLoaded(speculativeDistance: number): number {
   const limit = speculativeDistance + polyA.radius + polyB.radius;
@@ -259,12 +278,7 @@ function collideLoaded(speculativeDistance: number): number {
     return 0;
   }
 
-  const flip =
-    referenceHint === 1
-      ? !(separationA > separationB + STICKY_REFERENCE_TOLERANCE)
-      : referenceHint === 0
-        ? separationB > separationA + STICKY_REFERENCE_TOLERANCE
-        : separationB > separationA + REFERENCE_FACE_TOLERANCE;
+  const flip = referenceFromB(separationA, separationB);
   referenceFlip = flip;
   const ref = flip ? polyB : polyA;
   const inc = flip ? polyA : polyB;
@@ -293,11 +307,58 @@ function collideLoaded(speculativeDistance: number): number {
     }
   }
   const inc2 = inc1 + 1 === inc.count ? 0 : inc1 + 1;
-  const w1x = inc.x[inc1];
-  const w1y = inc.y[inc1];
-  const w2x = inc.x[inc2];
-  const w2y = inc.y[inc2];
+  return contactFromFaces(
+    owner,
+    refEdge,
+    ref2,
+    nx,
+    ny,
+    v1x,
+    v1y,
+    v2x,
+    v2y,
+    inc1,
+    inc2,
+    inc.x[inc1],
+    inc.y[inc1],
+    inc.x[inc2],
+    inc.y[inc2],
+    separation,
+    rRef,
+    rInc,
+    speculativeDistance,
+  );
+}
 
+/**
+ * Steps 3 and 4 above, in A's frame, once the faces are chosen: reference edge `refEdge` from v1 to
+ * v2 (the next vertex, `ref2`) with outward normal n, incident edge from vertex inc1 (w1) to inc2 (w2),
+ * `separation` the reference face's SAT separation, `radii` the sum of both shapes' radii. Writes the
+ * points to `local`; returns how many.
+ */
+function contactFromFaces(
+  owner: number,
+  refEdge: number,
+  ref2: number,
+  nx: number,
+  ny: number,
+  v1x: number,
+  v1y: number,
+  v2x: number,
+  v2y: number,
+  inc1: number,
+  inc2: number,
+  w1x: number,
+  w1y: number,
+  w2x: number,
+  w2y: number,
+  separation: number,
+  rRef: number,
+  rInc: number,
+  speculativeDistance: number,
+): number {
+  local[L_NX] = nx;
+  local[L_NY] = ny;
   if (separation > VERTEX_PAIR_MIN_GAP) {
     // cores apart: when the edges' true distance exceeds the face separation, two vertices are closest
     closestBetweenSegments(v1x, v1y, v2x, v2y, w1x, w1y, w2x, w2y, closest);
@@ -328,8 +389,6 @@ function collideLoaded(speculativeDistance: number): number {
   const upper = (v2x - v1x) * tx + (v2y - v1y) * ty;
   const a1 = (w1x - v1x) * tx + (w1y - v1y) * ty;
   const a2 = (w2x - v1x) * tx + (w2y - v1y) * ty;
-  local[L_NX] = nx;
-  local[L_NY] = ny;
   const idBase = owner | (refEdge << 4);
   if ((a1 < 0 && a2 < 0) || (a1 > upper && a2 > upper)) {
     // the incident edge misses the slab (only in deep or degenerate overlaps): keep its deeper vertex
@@ -361,11 +420,203 @@ function collideLoaded(speculativeDistance: number): number {
   return count;
 }
 
+/**
+ * collideLoaded for two packed rectangles (see packed.ts), read straight from their records with B
+ * placed by `relative`. The SAT takes each rectangle's two axes: an edge's separation is the centres'
+ * offset along its normal, less its own half extent and the other rectangle's extent along it, which
+ * is the smallest vertex distance maxSeparation finds by trying every vertex. Faces, ids and points
+ * then follow as there. Returns the point count (points in `local`).
+ */
+function collideRectangles(
+  data: Float64Array,
+  baseA: number,
+  baseB: number,
+  speculativeDistance: number,
+): number {
+  const rc = relative[0];
+  const rs = relative[1];
+  const rx = relative[2];
+  const ry = relative[3];
+  const radiusA = data[baseA + PACK_RADIUS];
+  const radiusB = data[baseB + PACK_RADIUS];
+  const limit = speculativeDistance + radiusA + radiusB;
+  const vA = baseA + PACK_VERTICES;
+  const vB = baseB + PACK_VERTICES;
+  // normals 0 and 1 of each (2 and 3 are their exact opposites), B's turned into A's frame
+  const n0x = data[vA + 2];
+  const n0y = data[vA + 3];
+  const n1x = data[vA + PACK_VERTEX_STRIDE + 2];
+  const n1y = data[vA + PACK_VERTEX_STRIDE + 3];
+  const p0x = data[vB + 2];
+  const p0y = data[vB + 3];
+  const p1x = data[vB + PACK_VERTEX_STRIDE + 2];
+  const p1y = data[vB + PACK_VERTEX_STRIDE + 3];
+  const m0x = rc * p0x - rs * p0y;
+  const m0y = rs * p0x + rc * p0y;
+  const m1x = rc * p1x - rs * p1y;
+  const m1y = rs * p1x + rc * p1y;
+  const bx = data[baseB + RECT_CX];
+  const by = data[baseB + RECT_CY];
+  const dx = rc * bx - rs * by + rx - data[baseA + RECT_CX];
+  const dy = rs * bx + rc * by + ry - data[baseA + RECT_CY];
+  const hA0 = data[baseA + RECT_H0];
+  const hA1 = data[baseA + RECT_H1];
+  const hB0 = data[baseB + RECT_H0];
+  const hB1 = data[baseB + RECT_H1];
+  const c00 = Math.abs(n0x * m0x + n0y * m0y);
+  const c01 = Math.abs(n0x * m1x + n0y * m1y);
+  const c10 = Math.abs(n1x * m0x + n1y * m0y);
+  const c11 = Math.abs(n1x * m1x + n1y * m1y);
+
+  // A's edges i and i + 2 lie on one axis, where B reaches the same extent either way
+  const dA0 = n0x * dx + n0y * dy;
+  const dA1 = n1x * dx + n1y * dy;
+  const reachA0 = hA0 + hB0 * c00 + hB1 * c01;
+  const reachA1 = hA1 + hB0 * c10 + hB1 * c11;
+  let edgeA = 0;
+  let separationA = dA0 - reachA0;
+  if (dA1 - reachA1 > separationA) {
+    edgeA = 1;
+    separationA = dA1 - reachA1;
+  }
+  if (-dA0 - reachA0 > separationA) {
+    edgeA = 2;
+    separationA = -dA0 - reachA0;
+  }
+  if (-dA1 - reachA1 > separationA) {
+    edgeA = 3;
+    separationA = -dA1 - reachA1;
+  }
+  if (separationA >= limit) {
+    separatingAxis = edgeA + 1;
+    return 0;
+  }
+  const dB0 = -(m0x * dx + m0y * dy);
+  const dB1 = -(m1x * dx + m1y * dy);
+  const reachB0 = hB0 + hA0 * c00 + hA1 * c10;
+  const reachB1 = hB1 + hA0 * c01 + hA1 * c11;
+  let edgeB = 0;
+  let separationB = dB0 - reachB0;
+  if (dB1 - reachB1 > separationB) {
+    edgeB = 1;
+    separationB = dB1 - reachB1;
+  }
+  if (-dB0 - reachB0 > separationB) {
+    edgeB = 2;
+    separationB = -dB0 - reachB0;
+  }
+  if (-dB1 - reachB1 > separationB) {
+    edgeB = 3;
+    separationB = -dB1 - reachB1;
+  }
+  if (separationB >= limit) {
+    separatingAxis = B_AXIS + edgeB + 1;
+    return 0;
+  }
+
+  const flip = referenceFromB(separationA, separationB);
+  referenceFlip = flip;
+  const refEdge = flip ? edgeB : edgeA;
+  const ref2 = (refEdge + 1) & 3;
+  const r1 = (flip ? vB : vA) + refEdge * PACK_VERTEX_STRIDE;
+  const r2 = (flip ? vB : vA) + ref2 * PACK_VERTEX_STRIDE;
+  let v1x = data[r1];
+  let v1y = data[r1 + 1];
+  let v2x = data[r2];
+  let v2y = data[r2 + 1];
+  let nx = data[r1 + 2];
+  let ny = data[r1 + 3];
+  // the incident rectangle's normals 0 and 1 in A's frame
+  let i0x = m0x;
+  let i0y = m0y;
+  let i1x = m1x;
+  let i1y = m1y;
+  if (flip) {
+    const ux = nx;
+    const uy = ny;
+    nx = rc * ux - rs * uy;
+    ny = rs * ux + rc * uy;
+    const x1 = v1x;
+    const y1 = v1y;
+    v1x = rc * x1 - rs * y1 + rx;
+    v1y = rs * x1 + rc * y1 + ry;
+    const x2 = v2x;
+    const y2 = v2y;
+    v2x = rc * x2 - rs * y2 + rx;
+    v2y = rs * x2 + rc * y2 + ry;
+    i0x = n0x;
+    i0y = n0y;
+    i1x = n1x;
+    i1y = n1y;
+  }
+  // the incident edge: the normal most against n, the first of equals as in collideLoaded
+  const dot0 = nx * i0x + ny * i0y;
+  const dot1 = nx * i1x + ny * i1y;
+  let inc1 = 0;
+  let minDot = dot0;
+  if (dot1 < minDot) {
+    inc1 = 1;
+    minDot = dot1;
+  }
+  if (-dot0 < minDot) {
+    inc1 = 2;
+    minDot = -dot0;
+  }
+  if (-dot1 < minDot) inc1 = 3;
+  const inc2 = (inc1 + 1) & 3;
+  const w1 = (flip ? vA : vB) + inc1 * PACK_VERTEX_STRIDE;
+  const w2 = (flip ? vA : vB) + inc2 * PACK_VERTEX_STRIDE;
+  let w1x = data[w1];
+  let w1y = data[w1 + 1];
+  let w2x = data[w2];
+  let w2y = data[w2 + 1];
+  if (!flip) {
+    const x1 = w1x;
+    const y1 = w1y;
+    w1x = rc * x1 - rs * y1 + rx;
+    w1y = rs * x1 + rc * y1 + ry;
+    const x2 = w2x;
+    const y2 = w2y;
+    w2x = rc * x2 - rs * y2 + rx;
+    w2y = rs * x2 + rc * y2 + ry;
+  }
+  return contactFromFaces(
+    flip ? B_REFERENCE_BIT : 0,
+    refEdge,
+    ref2,
+    nx,
+    ny,
+    v1x,
+    v1y,
+    v2x,
+    v2y,
+    inc1,
+    inc2,
+    w1x,
+    w1y,
+    w2x,
+    w2y,
+    flip ? separationB : separationA,
+    flip ? radiusB : radiusA,
+    flip ? radiusA : radiusB,
+    speculativeDistance,
+  );
+}
+
 /** Whether the last collideLoaded took its reference face from B. */
 let referenceFlip = false;
 
 /** Writes `count` points of `local` to the world manifold (points halfway between the surfaces). */
-function writeManifold(c: number, s: number, px: number, py: number, count: number, out: Manifold): void {
+function writeManifold(
+  c: number,
+  s: number,
+  px: number,
+  py: number,
+  count: number,
+  radiusA: number,
+  radiusB: number,
+  out: Manifold,
+): void {
   out.pointCount = count;
   if (count === 0) return;
   const nx = local[L_NX];
@@ -374,8 +625,8 @@ function writeManifold(c: number, s: number, px: number, py: number, count: numb
   const sign = flip ? -1 : 1;
   out.normalX = sign * (c * nx - s * ny);
   out.normalY = sign * (s * nx + c * ny);
-  const rRef = flip ? polyB.radius : polyA.radius;
-  const rInc = flip ? polyA.radius : polyB.radius;
+  const rRef = flip ? radiusB : radiusA;
+  const rInc = flip ? radiusA : radiusB;
   for (let i = 0; i < count; i++) {
     const k = L_POINTS + 3 * i;
     const coreSeparation = local[k + 2];
@@ -408,8 +659,16 @@ export function collidePackedPolygons(
   const as = xfA.q.s;
   const ax = xfA.p.x;
   const ay = xfA.p.y;
-  loadPolygonA(data, baseA);
   setRelative(ac, as, ax, ay, xfB.q.c, xfB.q.s, xfB.p.x, xfB.p.y);
-  loadPolygonB(data, baseB);
-  writeManifold(ac, as, ax, ay, collideLoaded(speculativeDistance), out);
+  const radiusA = data[baseA + PACK_RADIUS];
+  const radiusB = data[baseB + PACK_RADIUS];
+  let count: number;
+  if (data[baseA + PACK_RECTANGLE] === 1 && data[baseB + PACK_RECTANGLE] === 1) {
+    count = collideRectangles(data, baseA, baseB, speculativeDistance);
+  } else {
+    loadPolygonA(data, baseA);
+    loadPolygonB(data, baseB);
+    count = collideLoaded(speculativeDistance);
+  }
+  writeManifold(ac, as, ax, ay, count, radiusA, radiusB, out);
 }

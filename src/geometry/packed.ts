@@ -1,19 +1,35 @@
+import type { Vec2 } from '../math/vec2';
 import { CAPSULE, CIRCLE, type Geometry, MAX_POLYGON_VERTICES, POLYGON } from './types';
 
 /*
  * Geometry packed into a flat record of doubles, for the narrow phase and bounds: the geometry objects
  * keep each coordinate in its own heap box, and chasing those pointers for every pair of a large pile
  * costs more than the collision test itself. Record layout:
- *   [count, radius, then per vertex i: x, y, nx, ny]
+ *   [count, radius, rectangle flag, then per vertex i: x, y, nx, ny]
  * nx, ny is the outward unit normal of the edge from vertex i to vertex i + 1. A circle is one vertex
  * (its centre, no normal); a capsule or segment is a 2-vertex polygon whose edge 0 runs p1 -> p2 and
- * edge 1 back, so polygon routines handle it unchanged.
+ * edge 1 back, so polygon routines handle it unchanged. A rectangle (4 vertices, opposite normals
+ * opposite, neighbouring normals perpendicular: every box) has the flag set to 1 and, after
+ * its vertices, its centre and its half extents along normals 0 and 1, so that the separating axis
+ * test of two rectangles takes two axes each instead of every vertex against every edge.
  */
 export const PACK_COUNT = 0;
 export const PACK_RADIUS = 1;
-export const PACK_VERTICES = 2;
+export const PACK_RECTANGLE = 2;
+export const PACK_VERTICES = 3;
 export const PACK_VERTEX_STRIDE = 4;
 export const PACK_STRIDE = PACK_VERTICES + PACK_VERTEX_STRIDE * MAX_POLYGON_VERTICES;
+/** A rectangle's centre and its half extents along its normals 0 and 1, from the record's base. */
+export const RECT_CX = PACK_VERTICES + 4 * PACK_VERTEX_STRIDE;
+export const RECT_CY = RECT_CX + 1;
+export const RECT_H0 = RECT_CX + 2;
+export const RECT_H1 = RECT_CX + 3;
+/**
+ * How far a 4-gon's unit normals may be from exactly opposite and perpendicular for it to count as a
+ * rectangle: a turned box's normals are off by rounding, and the rectangle routine's result then
+ * differs from the every-vertex one by about as much.
+ */
+const RECTANGLE_TOLERANCE = 1e-12;
 
 function packVertex(
   out: Float64Array,
@@ -31,8 +47,21 @@ function packVertex(
   out[k + 3] = ny;
 }
 
+function isRectangle(count: number, n: readonly Vec2[]): boolean {
+  const tolerance = RECTANGLE_TOLERANCE;
+  return (
+    count === 4 &&
+    Math.abs(n[2].x + n[0].x) < tolerance &&
+    Math.abs(n[2].y + n[0].y) < tolerance &&
+    Math.abs(n[3].x + n[1].x) < tolerance &&
+    Math.abs(n[3].y + n[1].y) < tolerance &&
+    Math.abs(n[0].x * n[1].x + n[0].y * n[1].y) < tolerance
+  );
+}
+
 /** Writes the packed record of `g` to `out` at `base` (PACK_STRIDE doubles). */
 export function packGeometry(g: Geometry, out: Float64Array, base: number): void {
+  out[base + PACK_RECTANGLE] = 0;
   if (g.kind === CIRCLE) {
     out[base + PACK_COUNT] = 1;
     out[base + PACK_RADIUS] = g.radius;
@@ -44,6 +73,17 @@ export function packGeometry(g: Geometry, out: Float64Array, base: number): void
     out[base + PACK_RADIUS] = g.radius;
     for (let i = 0; i < g.count; i++) {
       packVertex(out, base, i, g.vertices[i].x, g.vertices[i].y, g.normals[i].x, g.normals[i].y);
+    }
+    if (isRectangle(g.count, g.normals)) {
+      const v = g.vertices;
+      const n = g.normals;
+      const cx = 0.5 * (v[0].x + v[2].x);
+      const cy = 0.5 * (v[0].y + v[2].y);
+      out[base + PACK_RECTANGLE] = 1;
+      out[base + RECT_CX] = cx;
+      out[base + RECT_CY] = cy;
+      out[base + RECT_H0] = n[0].x * (v[0].x - cx) + n[0].y * (v[0].y - cy);
+      out[base + RECT_H1] = n[1].x * (v[1].x - cx) + n[1].y * (v[1].y - cy);
     }
     return;
   }
