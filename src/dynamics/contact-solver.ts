@@ -26,20 +26,29 @@ const C_K22 = 12;
 const C_POINTS = 13;
 /** K's condition number above which the two points are solved one after the other */
 const MAX_CONDITION = 1000;
-// Per point, relative to its base.
-const P_RAX = 0;
-const P_RAY = 1;
-const P_RBX = 2;
-const P_RBY = 3;
+// Per point, relative to its base. With anchors rA, rB (from the centres of mass), normal n and
+// tangent t = (ny, -nx), the solver needs the anchors only through their cross products with n and t:
+// the relative normal velocity is (vB - vA) . n + wB (rB x n) - wA (rA x n), and an impulse P turns a
+// body by its inverse inertia times r x P.
+/** rA x n */
+const P_RNA = 0;
+/** rB x n */
+const P_RNB = 1;
+/** rA x t, which is -(rA . n) */
+const P_RTA = 2;
+/** rB x t */
+const P_RTB = 3;
 /**
  * The separation is tracked through the substeps between the contact point moved back onto each
  * shape's core (by the shape's radius and half the separation): these core points turn with the body,
  * and for a circle the core point is its centre, so a fast-spinning ball does not drag its contact
- * point around with it. Stored as the distances back from the anchor along the normal: rotated by a
- * body's turn q, the offset -back n of A's core point contributes back * cos(q) along n.
+ * point around with it. A body's turn q = (c, s) since the step began moves its core point's offset
+ * along n to c (r . n - back) + s (r x n) (back being the distance from the anchor back to the core
+ * point); P_QA and P_QB hold the cosine terms' coefficients: for A back - rA . n (A's offset counts
+ * negatively), for B rB . n + back.
  */
-const P_BACK_A = 4;
-const P_BACK_B = 5;
+const P_QA = 4;
+const P_QB = 5;
 /** separation at the start of the step minus the core points' offset along the normal */
 const P_ADJ_SEP = 6;
 const P_NMASS = 7;
@@ -177,23 +186,23 @@ export function prepareContacts(
       const rAy = pointY[k] - cAy;
       const rBx = pointX[k] - cBx;
       const rBy = pointY[k] - cBy;
-      d[p + P_RAX] = rAx;
-      d[p + P_RAY] = rAy;
-      d[p + P_RBX] = rBx;
-      d[p + P_RBY] = rBy;
+      const rnA = rAx * ny - rAy * nx;
+      const rnB = rBx * ny - rBy * nx;
+      const rtA = rAx * ty - rAy * tx;
+      const rtB = rBx * ty - rBy * tx;
+      d[p + P_RNA] = rnA;
+      d[p + P_RNB] = rnB;
+      d[p + P_RTA] = rtA;
+      d[p + P_RTB] = rtB;
       // the surfaces are separation/2 either side of the point; the cores a radius further in
       const sep = separation[k];
       const backA = radiusA + 0.5 * sep;
       const backB = radiusB + 0.5 * sep;
-      d[p + P_BACK_A] = backA;
-      d[p + P_BACK_B] = backB;
+      d[p + P_QA] = backA + rtA;
+      d[p + P_QB] = backB - rtB;
       d[p + P_ADJ_SEP] = sep - ((rBx - rAx) * nx + (rBy - rAy) * ny + backA + backB);
-      const rnA = rAx * ny - rAy * nx;
-      const rnB = rBx * ny - rBy * nx;
       const kN = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
       d[p + P_NMASS] = kN > 0 ? 1 / kN : 0;
-      const rtA = rAx * ty - rAy * tx;
-      const rtB = rBx * ty - rBy * tx;
       const kT = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
       d[p + P_TMASS] = kT > 0 ? 1 / kT : 0;
       d[p + P_NIMP] = normalImpulse[k];
@@ -207,10 +216,10 @@ export function prepareContacts(
     if (pointCount === 2) {
       const p1 = base + C_POINTS;
       const p2 = p1 + P_STRIDE;
-      const rn1A = d[p1 + P_RAX] * ny - d[p1 + P_RAY] * nx;
-      const rn1B = d[p1 + P_RBX] * ny - d[p1 + P_RBY] * nx;
-      const rn2A = d[p2 + P_RAX] * ny - d[p2 + P_RAY] * nx;
-      const rn2B = d[p2 + P_RBX] * ny - d[p2 + P_RBY] * nx;
+      const rn1A = d[p1 + P_RNA];
+      const rn1B = d[p1 + P_RNB];
+      const rn2A = d[p2 + P_RNA];
+      const rn2B = d[p2 + P_RNB];
       const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
       const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
       const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
@@ -254,10 +263,10 @@ export function warmStartContacts(cc: ContactConstraints, state: Float64Array): 
       // P = ni * n + ti * t, with t = (ny, -nx)
       const Px = ni * nx + ti * ny;
       const Py = ni * ny - ti * nx;
-      wA -= iA * (d[p + P_RAX] * Py - d[p + P_RAY] * Px);
+      wA -= iA * (ni * d[p + P_RNA] + ti * d[p + P_RTA]);
       vAx -= mA * Px;
       vAy -= mA * Py;
-      wB += iB * (d[p + P_RBX] * Py - d[p + P_RBY] * Px);
+      wB += iB * (ni * d[p + P_RNB] + ti * d[p + P_RTB]);
       vBx += mB * Px;
       vBy += mB * Py;
     }
@@ -320,29 +329,13 @@ export function solveContacts(
     if (d[base + C_BLOCK] === 1) {
       const p1 = base + C_POINTS;
       const p2 = p1 + P_STRIDE;
-      const r1Ax = d[p1 + P_RAX];
-      const r1Ay = d[p1 + P_RAY];
-      const r1Bx = d[p1 + P_RBX];
-      const r1By = d[p1 + P_RBY];
-      const r2Ax = d[p2 + P_RAX];
-      const r2Ay = d[p2 + P_RAY];
-      const r2Bx = d[p2 + P_RBX];
-      const r2By = d[p2 + P_RBY];
-      // current separations from the motion accumulated since the step began (see P_BACK_A)
-      const s1 =
-        dpn +
-        (qBc * r1Bx - qBs * r1By - qAc * r1Ax + qAs * r1Ay) * nx +
-        (qBs * r1Bx + qBc * r1By - qAs * r1Ax - qAc * r1Ay) * ny +
-        d[p1 + P_BACK_A] * qAc +
-        d[p1 + P_BACK_B] * qBc +
-        d[p1 + P_ADJ_SEP];
-      const s2 =
-        dpn +
-        (qBc * r2Bx - qBs * r2By - qAc * r2Ax + qAs * r2Ay) * nx +
-        (qBs * r2Bx + qBc * r2By - qAs * r2Ax - qAc * r2Ay) * ny +
-        d[p2 + P_BACK_A] * qAc +
-        d[p2 + P_BACK_B] * qBc +
-        d[p2 + P_ADJ_SEP];
+      const rn1A = d[p1 + P_RNA];
+      const rn1B = d[p1 + P_RNB];
+      const rn2A = d[p2 + P_RNA];
+      const rn2B = d[p2 + P_RNB];
+      // current separations from the motion accumulated since the step began (see P_QA)
+      const s1 = dpn + qBc * d[p1 + P_QB] + qBs * rn1B + qAc * d[p1 + P_QA] - qAs * rn1A + d[p1 + P_ADJ_SEP];
+      const s2 = dpn + qBc * d[p2 + P_QB] + qBs * rn2B + qAc * d[p2 + P_QA] - qAs * rn2A + d[p2 + P_ADJ_SEP];
       const k11 = d[base + C_K11];
       const k12 = d[base + C_K12];
       const k22 = d[base + C_K22];
@@ -362,8 +355,9 @@ export function solveContacts(
         b2 = Math.max(biasRate * s2, -maxPushSpeed);
         g2 = soft[k + 3] * k22;
       }
-      const vn1 = (vBx - wB * r1By - vAx + wA * r1Ay) * nx + (vBy + wB * r1Bx - vAy - wA * r1Ax) * ny;
-      const vn2 = (vBx - wB * r2By - vAx + wA * r2Ay) * nx + (vBy + wB * r2Bx - vAy - wA * r2Ax) * ny;
+      const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
+      const vn1 = dvn + wB * rn1B - wA * rn1A;
+      const vn2 = dvn + wB * rn2B - wA * rn2A;
       const l1 = d[p1 + P_NIMP];
       const l2 = d[p2 + P_NIMP];
       // Soft block solve: find new impulses x >= 0 with vn' + b + G x = 0 on pushing points, where
@@ -401,24 +395,16 @@ export function solveContacts(
       const Py = (dl1 + dl2) * ny;
       vAx -= mA * Px;
       vAy -= mA * Py;
-      wA -= iA * ((r1Ax * ny - r1Ay * nx) * dl1 + (r2Ax * ny - r2Ay * nx) * dl2);
+      wA -= iA * (rn1A * dl1 + rn2A * dl2);
       vBx += mB * Px;
       vBy += mB * Py;
-      wB += iB * ((r1Bx * ny - r1By * nx) * dl1 + (r2Bx * ny - r2By * nx) * dl2);
+      wB += iB * (rn1B * dl1 + rn2B * dl2);
     } else {
       for (let j = 0; j < count; j++) {
         const p = base + C_POINTS + j * P_STRIDE;
-        const rAx = d[p + P_RAX];
-        const rAy = d[p + P_RAY];
-        const rBx = d[p + P_RBX];
-        const rBy = d[p + P_RBY];
-        const sep =
-          dpn +
-          (qBc * rBx - qBs * rBy - qAc * rAx + qAs * rAy) * nx +
-          (qBs * rBx + qBc * rBy - qAs * rAx - qAc * rAy) * ny +
-          d[p + P_BACK_A] * qAc +
-          d[p + P_BACK_B] * qBc +
-          d[p + P_ADJ_SEP];
+        const rnA = d[p + P_RNA];
+        const rnB = d[p + P_RNB];
+        const sep = dpn + qBc * d[p + P_QB] + qBs * rnB + qAc * d[p + P_QA] - qAs * rnA + d[p + P_ADJ_SEP];
         let bias = 0;
         let mScale = 1;
         let iScale = 0;
@@ -428,9 +414,7 @@ export function solveContacts(
           mScale = massScale;
           iScale = impulseScale;
         }
-        const dvx = vBx - wB * rBy - vAx + wA * rAy;
-        const dvy = vBy + wB * rBx - vAy - wA * rAx;
-        const vn = dvx * nx + dvy * ny;
+        const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * rnB - wA * rnA;
         const old = d[p + P_NIMP];
         let impulse = -d[p + P_NMASS] * mScale * (vn + bias) - iScale * old;
         const next = Math.max(old + impulse, 0);
@@ -441,10 +425,10 @@ export function solveContacts(
         const Py = impulse * ny;
         vAx -= mA * Px;
         vAy -= mA * Py;
-        wA -= iA * (rAx * Py - rAy * Px);
+        wA -= iA * impulse * rnA;
         vBx += mB * Px;
         vBy += mB * Py;
-        wB += iB * (rBx * Py - rBy * Px);
+        wB += iB * impulse * rnB;
       }
     }
 
@@ -453,13 +437,9 @@ export function solveContacts(
     const ty = -nx;
     for (let j = 0; j < count; j++) {
       const p = base + C_POINTS + j * P_STRIDE;
-      const rAx = d[p + P_RAX];
-      const rAy = d[p + P_RAY];
-      const rBx = d[p + P_RBX];
-      const rBy = d[p + P_RBY];
-      const dvx = vBx - wB * rBy - vAx + wA * rAy;
-      const dvy = vBy + wB * rBx - vAy - wA * rAx;
-      const vt = dvx * tx + dvy * ty;
+      const rtA = d[p + P_RTA];
+      const rtB = d[p + P_RTB];
+      const vt = (vBx - vAx) * tx + (vBy - vAy) * ty + wB * rtB - wA * rtA;
       const maxFriction = friction * d[p + P_NIMP];
       const old = d[p + P_TIMP];
       const next = Math.max(-maxFriction, Math.min(old - d[p + P_TMASS] * vt, maxFriction));
@@ -469,10 +449,10 @@ export function solveContacts(
       const Py = impulse * ty;
       vAx -= mA * Px;
       vAy -= mA * Py;
-      wA -= iA * (rAx * Py - rAy * Px);
+      wA -= iA * impulse * rtA;
       vBx += mB * Px;
       vBy += mB * Py;
-      wB += iB * (rBx * Py - rBy * Px);
+      wB += iB * impulse * rtB;
     }
     state[sa + S_VX] = vAx;
     state[sa + S_VY] = vAy;
@@ -514,13 +494,9 @@ export function applyRestitution(cc: ContactConstraints, state: Float64Array, th
       const p = base + C_POINTS + j * P_STRIDE;
       const relVel = cc.restitution[rBase + R_REL_VEL + j];
       if (relVel > -threshold || d[p + P_MAX_NIMP] === 0) continue;
-      const rAx = d[p + P_RAX];
-      const rAy = d[p + P_RAY];
-      const rBx = d[p + P_RBX];
-      const rBy = d[p + P_RBY];
-      const dvx = vBx - wB * rBy - vAx + wA * rAy;
-      const dvy = vBy + wB * rBx - vAy - wA * rAx;
-      const vn = dvx * nx + dvy * ny;
+      const rnA = d[p + P_RNA];
+      const rnB = d[p + P_RNB];
+      const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * rnB - wA * rnA;
       const old = d[p + P_NIMP];
       let impulse = -d[p + P_NMASS] * (vn + restitution * relVel);
       const next = Math.max(old + impulse, 0);
@@ -531,10 +507,10 @@ export function applyRestitution(cc: ContactConstraints, state: Float64Array, th
       const Py = impulse * ny;
       vAx -= mA * Px;
       vAy -= mA * Py;
-      wA -= iA * (rAx * Py - rAy * Px);
+      wA -= iA * impulse * rnA;
       vBx += mB * Px;
       vBy += mB * Py;
-      wB += iB * (rBx * Py - rBy * Px);
+      wB += iB * impulse * rnB;
     }
     state[sa + S_VX] = vAx;
     state[sa + S_VY] = vAy;
