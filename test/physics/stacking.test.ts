@@ -78,6 +78,32 @@ describe('stacking', () => {
     }
   });
 
+  it('a pyramid with a base of 40 stays centred: the solve order does not push it sideways', () => {
+    // The pile is symmetric, so nothing should move its centre of mass sideways or its top off the
+    // axis. With the constraints coloured in a fixed order every box of a row was favoured the same
+    // way: the ground's friction pushed the pile 6.5 mm aside within 0.3 s, the top swung 26 mm and
+    // the pile crept 4 mm between 1 s and 4 s.
+    const { world } = groundWorld({ enableSleep: false });
+    const boxes = pyramid(world, 40);
+    const top = boxes[boxes.length - 1];
+    const centreX = () => boxes.reduce((sum, b) => sum + b.position.x, 0) / boxes.length;
+    let worstCentre = 0;
+    let worstTop = 0;
+    run(world, 1, () => {
+      worstCentre = Math.max(worstCentre, Math.abs(centreX()));
+      worstTop = Math.max(worstTop, Math.abs(top.position.x));
+    });
+    const start = boxes.map((b) => b.position);
+    let moved = 0;
+    run(world, 3, () => {
+      worstCentre = Math.max(worstCentre, Math.abs(centreX()));
+      for (let i = 0; i < boxes.length; i++) moved = Math.max(moved, dist(boxes[i].position, start[i]));
+    });
+    expect(worstCentre).toBeLessThan(0.001);
+    expect(worstTop).toBeLessThan(0.005);
+    expect(moved).toBeLessThan(0.002);
+  });
+
   it('a pyramid with a base of 100 (5,050 boxes) stands for 10 s', async () => {
     const { world } = groundWorld({ enableSleep: false });
     const boxes = pyramid(world, 100);
