@@ -114,6 +114,8 @@ export function prepareContacts(
   anchoredSoft: Softness,
 ): void {
   cc.reserve(count);
+  // set before the loop, which must end the function (see listAwakeBodies in solver.ts)
+  cc.count = count;
   setSoftness(cc.softness, 0, contactSoft);
   setSoftness(cc.softness, 4, anchoredSoft);
   const d = cc.data;
@@ -232,7 +234,6 @@ export function prepareContacts(
       }
     }
   }
-  cc.count = count;
 }
 
 /** Applies the impulses kept from the previous substep (or step) so the solver starts near the answer. */

@@ -62,6 +62,23 @@ export class GraphColoring {
   finish(): number {
     const count = this.count;
     this.shuffle(count);
+    this.assign(count);
+    const starts = this.starts;
+    let start = 0;
+    for (let c = 0; c <= COLORS; c++) {
+      const n = starts[c];
+      starts[c] = start;
+      start += n;
+    }
+    this.scatter(count);
+    this.clearBodies(count);
+    return count;
+  }
+
+  // Each long loop below is a method of its own (see listAwakeBodies in solver.ts).
+
+  /** Gives each contact, in shuffled order, the lowest colour its bodies have not taken; counts per colour. */
+  private assign(count: number): void {
     const colors = this.bodyColors;
     const starts = this.starts;
     for (let i = 0; i < count; i++) {
@@ -79,18 +96,20 @@ export class GraphColoring {
       this.colorOf[k] = color;
       starts[color]++;
     }
-    let start = 0;
-    for (let c = 0; c <= COLORS; c++) {
-      const n = starts[c];
-      starts[c] = start;
-      start += n;
-    }
+  }
+
+  /** Writes the slots to `order` by colour, in the order they were added within a colour. */
+  private scatter(count: number): void {
+    const starts = this.starts;
     for (let k = 0; k < count; k++) this.order[starts[this.colorOf[k]]++] = this.slots[k];
+  }
+
+  private clearBodies(count: number): void {
+    const colors = this.bodyColors;
     for (let k = 0; k < count; k++) {
       if (this.bodyA[k] >= 0) colors[this.bodyA[k]] = 0;
       if (this.bodyB[k] >= 0) colors[this.bodyB[k]] = 0;
     }
-    return count;
   }
 
   /** `shuffled` = 0 .. count - 1 in Fisher-Yates order, driven by an integer hash of the round. */

@@ -8,6 +8,7 @@ import {
 } from '../core/settings';
 import { clampVelocity, integratePositions, integrateVelocities } from './body-solver';
 import {
+  type BodyStore,
   DYNAMIC,
   FLAG_ALLOW_SLEEP,
   FLAG_AWAKE,
@@ -29,8 +30,9 @@ import {
   storeImpulses,
   warmStartContacts,
 } from './contact-solver';
-import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
+import { CONTACT_SENSOR, CONTACT_TOUCHING, type ContactStore } from './contact-store';
 import { deferBullet, solveBullets, solveContinuous } from './continuous';
+import type { GraphColoring } from './graph-color';
 import { SHAPE_HIT_EVENTS } from './shape-store';
 import { makeSoftness, type Softness } from './softness';
 import type { WorldCore } from './world-core';
@@ -42,14 +44,23 @@ const staticSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
 export function collectAwakeBodies(core: WorldCore): void {
   const bodies = core.bodies;
   if (core.awake.length < bodies.slotCount) core.awake = growI32(core.awake, bodies.capacity);
-  const awake = core.awake;
+  core.awakeCount = listAwakeBodies(bodies, core.awake);
+}
+
+/*
+ * A long loop in a function called once a step runs in on-stack-replaced code, compiled while the
+ * function's first call is still in the loop. V8 (Node 20) keeps reusing that code although it
+ * deoptimizes at the first statement after the loop that had not run yet when it was compiled: every
+ * step, for good. So such loops sit in functions of their own that end with the loop (or return).
+ */
+function listAwakeBodies(bodies: BodyStore, awake: Int32Array): number {
   let count = 0;
   for (let b = 0, n = bodies.slotCount; b < n; b++) {
     if (bodies.alive[b] !== 0 && (bodies.flags[b] & FLAG_AWAKE) !== 0 && bodies.kind[b] !== STATIC) {
       awake[count++] = b;
     }
   }
-  core.awakeCount = count;
+  return count;
 }
 
 /**
@@ -94,6 +105,18 @@ function prepareJoints(core: WorldCore, h: number): void {
   core.hingeBatch.prepare(active, core.jointTree.iterative, ctx, rebuilt);
 }
 
+/** Adds the touching solid contacts that have an awake body to the colouring (see listAwakeBodies). */
+function addTouchingContacts(contacts: ContactStore, bodies: BodyStore, coloring: GraphColoring): void {
+  for (let c = 0, n = contacts.slotCount; c < n; c++) {
+    if (contacts.alive[c] === 0) continue;
+    if ((contacts.flags[c] & (CONTACT_TOUCHING | CONTACT_SENSOR)) !== CONTACT_TOUCHING) continue;
+    const a = contacts.bodyA[c];
+    const b = contacts.bodyB[c];
+    if ((bodies.flags[a] & FLAG_AWAKE) === 0 && (bodies.flags[b] & FLAG_AWAKE) === 0) continue;
+    coloring.add(c, bodies.kind[a] === DYNAMIC ? a : -1, bodies.kind[b] === DYNAMIC ? b : -1);
+  }
+}
+
 /** Builds one constraint per touching solid contact that has an awake body. */
 function prepareContacts(core: WorldCore, h: number): void {
   const contacts = core.contacts;
@@ -106,14 +129,7 @@ function prepareContacts(core: WorldCore, h: number): void {
   makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness);
   const coloring = core.coloring;
   coloring.begin(bodies.capacity, contacts.liveCount);
-  for (let c = 0, n = contacts.slotCount; c < n; c++) {
-    if (contacts.alive[c] === 0) continue;
-    if ((contacts.flags[c] & (CONTACT_TOUCHING | CONTACT_SENSOR)) !== CONTACT_TOUCHING) continue;
-    const a = contacts.bodyA[c];
-    const b = contacts.bodyB[c];
-    if ((bodies.flags[a] & FLAG_AWAKE) === 0 && (bodies.flags[b] & FLAG_AWAKE) === 0) continue;
-    coloring.add(c, bodies.kind[a] === DYNAMIC ? a : -1, bodies.kind[b] === DYNAMIC ? b : -1);
-  }
+  addTouchingContacts(contacts, bodies, coloring);
   const total = coloring.finish();
   prepareContactConstraints(
     cc,
