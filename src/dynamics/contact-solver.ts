@@ -368,10 +368,10 @@ export function solveContacts(
       const a22 = k22 + g2;
       const r1 = -(vn1 + b1) - g1 * l1;
       const r2 = -(vn2 + b2) - g2 * l2;
-      const det = a11 * a22 - k12 * k12;
+      const invDet = 1 / (a11 * a22 - k12 * k12);
       // case 1: both points push
-      let x1 = l1 + (a22 * r1 - k12 * r2) / det;
-      let x2 = l2 + (a11 * r2 - k12 * r1) / det;
+      let x1 = l1 + (a22 * r1 - k12 * r2) * invDet;
+      let x2 = l2 + (a11 * r2 - k12 * r1) * invDet;
       if (x1 < 0 || x2 < 0) {
         // case 2: only point 1 pushes; point 2 must then be separating
         x1 = l1 + (r1 + k12 * l2) / a11;
