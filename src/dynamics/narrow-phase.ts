@@ -9,7 +9,7 @@ import { PACK_STRIDE } from '../geometry/packed';
 import type { Manifold, ManifoldPoint } from '../geometry/types';
 import { DYNAMIC, FLAG_AWAKE } from './body-store';
 import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
-import { SHAPE_SENSOR, shouldShapesCollide } from './shape-store';
+import { SHAPE_SENSOR, type ShapeStore, shouldShapesCollide } from './shape-store';
 import type { WorldCore } from './world-core';
 
 /** A manifold point of its own class, so that its fields stay unboxed doubles (see ScratchPoint). */
@@ -44,6 +44,16 @@ export function createNewContacts(core: WorldCore): void {
   }
 }
 
+/** Whether the shapes' tight boxes are more than `reach` apart along x or y. */
+function tightBoxesApart(shapes: ShapeStore, a: number, b: number, reach: number): boolean {
+  return (
+    shapes.minX[a] - shapes.maxX[b] > reach ||
+    shapes.minX[b] - shapes.maxX[a] > reach ||
+    shapes.minY[a] - shapes.maxY[b] > reach ||
+    shapes.minY[b] - shapes.maxY[a] > reach
+  );
+}
+
 /**
  * Updates the manifold of every contact with an awake body, keeps the impulses of points whose
  * feature id survived (warm starting), records begin/end touching, wakes sleeping bodies that an
@@ -74,21 +84,27 @@ export function updateContacts(core: WorldCore): void {
     const flags = contacts.flags[c];
     const sensor = (flags & CONTACT_SENSOR) !== 0;
     const k0 = c * 2;
-    setReferenceHint(contacts.pointCount[c] > 0 ? referenceOwnerOfId(contacts.pointId[k0]) : -1);
-    setSeparatingAxisHint(contacts.separatingAxis[c]);
-    collidePacked(
-      shapes.kind[shapeA],
-      shapes.kind[shapeB],
-      shapes.packed,
-      shapeA * PACK_STRIDE,
-      core.fillTransform(bodyA, core.xfA),
-      shapeB * PACK_STRIDE,
-      core.fillTransform(bodyB, core.xfB),
-      sensor ? 0 : speculative,
-      manifold,
-    );
+    const reach = sensor ? 0 : speculative;
+    if (tightBoxesApart(shapes, shapeA, shapeB, reach)) {
+      // no point can be closer than the boxes: the manifold would be empty
+      manifold.pointCount = 0;
+    } else {
+      setReferenceHint(contacts.pointCount[c] > 0 ? referenceOwnerOfId(contacts.pointId[k0]) : -1);
+      setSeparatingAxisHint(contacts.separatingAxis[c]);
+      collidePacked(
+        shapes.kind[shapeA],
+        shapes.kind[shapeB],
+        shapes.packed,
+        shapeA * PACK_STRIDE,
+        core.fillTransform(bodyA, core.xfA),
+        shapeB * PACK_STRIDE,
+        core.fillTransform(bodyB, core.xfB),
+        reach,
+        manifold,
+      );
+      contacts.separatingAxis[c] = lastSeparatingAxis();
+    }
     const count = manifold.pointCount;
-    contacts.separatingAxis[c] = lastSeparatingAxis();
     if (!sensor) {
       // Carry the impulses of surviving points over (warm starting): same feature id, or else the old
       // point nearest to the new one. The position fallback keeps the impulses when the manifold

@@ -416,3 +416,40 @@ describe('collide: rectangles', () => {
     expect(Math.min(...counts)).toBeGreaterThan(50);
   });
 });
+
+describe('collide: boxes apart', () => {
+  it('gives no point when the shapes’ bounding boxes are further apart than the speculative distance', () => {
+    // the narrow phase skips such pairs without calling collide: it must agree
+    const rnd = random(33);
+    let checked = 0;
+    for (let trial = 0; trial < 2000; trial++) {
+      const nameA = names[trial % names.length];
+      const nameB = names[Math.floor(rnd() * names.length)];
+      if (nameA === 'segment' && nameB === 'segment') continue;
+      const a = catalog[nameA];
+      const b = catalog[nameB];
+      const xfA = xf(0, 0, rnd() * 6.3);
+      const direction = rnd() * 6.3;
+      const xfB = placeNear(a, xfA, b, rnd() * 6.3, Math.cos(direction), Math.sin(direction), 0.1 * rnd());
+      const box = (g: Geometry, t: Transform) => {
+        const core = worldCore(g, t);
+        const xs = core.points.map((p) => p.x);
+        const ys = core.points.map((p) => p.y);
+        const r = core.radius;
+        return {
+          minX: Math.min(...xs) - r,
+          maxX: Math.max(...xs) + r,
+          minY: Math.min(...ys) - r,
+          maxY: Math.max(...ys) + r,
+        };
+      };
+      const p = box(a, xfA);
+      const q = box(b, xfB);
+      const gap = Math.max(p.minX - q.maxX, q.minX - p.maxX, p.minY - q.maxY, q.minY - p.maxY);
+      if (!(gap > SPECULATIVE)) continue;
+      checked++;
+      expect(run(a, xfA, b, xfB).pointCount, `${nameA}-${nameB} trial ${trial}`).toBe(0);
+    }
+    expect(checked).toBeGreaterThan(200);
+  });
+});
