@@ -307,56 +307,64 @@ function collideLoaded(speculativeDistance: number): number {
     }
   }
   const inc2 = inc1 + 1 === inc.count ? 0 : inc1 + 1;
-  return contactFromFaces(
-    owner,
-    refEdge,
-    ref2,
-    nx,
-    ny,
-    v1x,
-    v1y,
-    v2x,
-    v2y,
-    inc1,
-    inc2,
-    inc.x[inc1],
-    inc.y[inc1],
-    inc.x[inc2],
-    inc.y[inc2],
-    separation,
-    rRef,
-    rInc,
-    speculativeDistance,
-  );
+  faces[F_NX] = nx;
+  faces[F_NY] = ny;
+  faces[F_V1X] = v1x;
+  faces[F_V1Y] = v1y;
+  faces[F_V2X] = v2x;
+  faces[F_V2Y] = v2y;
+  faces[F_W1X] = inc.x[inc1];
+  faces[F_W1Y] = inc.y[inc1];
+  faces[F_W2X] = inc.x[inc2];
+  faces[F_W2Y] = inc.y[inc2];
+  faces[F_SEPARATION] = separation;
+  faces[F_R_REF] = rRef;
+  faces[F_R_INC] = rInc;
+  faces[F_SPECULATIVE] = speculativeDistance;
+  return contactFromFaces(owner, refEdge, ref2, inc1, inc2);
 }
 
 /**
- * Steps 3 and 4 above, in A's frame, once the faces are chosen: reference edge `refEdge` from v1 to
- * v2 (the next vertex, `ref2`) with outward normal n, incident edge from vertex inc1 (w1) to inc2 (w2),
- * `separation` the reference face's SAT separation, `radii` the sum of both shapes' radii. Writes the
- * points to `local`; returns how many.
+ * The inputs of contactFromFaces, in A's frame: a double passed to a call that is not inlined is boxed
+ * on the heap, and this runs for every polygon pair of every step.
  */
-function contactFromFaces(
-  owner: number,
-  refEdge: number,
-  ref2: number,
-  nx: number,
-  ny: number,
-  v1x: number,
-  v1y: number,
-  v2x: number,
-  v2y: number,
-  inc1: number,
-  inc2: number,
-  w1x: number,
-  w1y: number,
-  w2x: number,
-  w2y: number,
-  separation: number,
-  rRef: number,
-  rInc: number,
-  speculativeDistance: number,
-): number {
+const faces = new Float64Array(14);
+const F_NX = 0;
+const F_NY = 1;
+const F_V1X = 2;
+const F_V1Y = 3;
+const F_V2X = 4;
+const F_V2Y = 5;
+const F_W1X = 6;
+const F_W1Y = 7;
+const F_W2X = 8;
+const F_W2Y = 9;
+const F_SEPARATION = 10;
+const F_R_REF = 11;
+const F_R_INC = 12;
+const F_SPECULATIVE = 13;
+
+/**
+ * Steps 3 and 4 above, once the faces are chosen (inputs in `faces`): reference edge `refEdge` from
+ * v1 to v2 (the next vertex, `ref2`) with outward normal n, incident edge from vertex inc1 (w1) to
+ * inc2 (w2), the reference face's SAT separation, both shapes' radii. Writes the points to `local`;
+ * returns how many.
+ */
+function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: number, inc2: number): number {
+  const nx = faces[F_NX];
+  const ny = faces[F_NY];
+  const v1x = faces[F_V1X];
+  const v1y = faces[F_V1Y];
+  const v2x = faces[F_V2X];
+  const v2y = faces[F_V2Y];
+  const w1x = faces[F_W1X];
+  const w1y = faces[F_W1Y];
+  const w2x = faces[F_W2X];
+  const w2y = faces[F_W2Y];
+  const separation = faces[F_SEPARATION];
+  const rRef = faces[F_R_REF];
+  const rInc = faces[F_R_INC];
+  const speculativeDistance = faces[F_SPECULATIVE];
   local[L_NX] = nx;
   local[L_NY] = ny;
   if (separation > VERTEX_PAIR_MIN_GAP) {
@@ -580,27 +588,21 @@ function collideRectangles(
     w2x = rc * x2 - rs * y2 + rx;
     w2y = rs * x2 + rc * y2 + ry;
   }
-  return contactFromFaces(
-    flip ? B_REFERENCE_BIT : 0,
-    refEdge,
-    ref2,
-    nx,
-    ny,
-    v1x,
-    v1y,
-    v2x,
-    v2y,
-    inc1,
-    inc2,
-    w1x,
-    w1y,
-    w2x,
-    w2y,
-    flip ? separationB : separationA,
-    flip ? radiusB : radiusA,
-    flip ? radiusA : radiusB,
-    speculativeDistance,
-  );
+  faces[F_NX] = nx;
+  faces[F_NY] = ny;
+  faces[F_V1X] = v1x;
+  faces[F_V1Y] = v1y;
+  faces[F_V2X] = v2x;
+  faces[F_V2Y] = v2y;
+  faces[F_W1X] = w1x;
+  faces[F_W1Y] = w1y;
+  faces[F_W2X] = w2x;
+  faces[F_W2Y] = w2y;
+  faces[F_SEPARATION] = flip ? separationB : separationA;
+  faces[F_R_REF] = flip ? radiusB : radiusA;
+  faces[F_R_INC] = flip ? radiusA : radiusB;
+  faces[F_SPECULATIVE] = speculativeDistance;
+  return contactFromFaces(flip ? B_REFERENCE_BIT : 0, refEdge, ref2, inc1, inc2);
 }
 
 /** Whether the last collideLoaded took its reference face from B. */
@@ -608,17 +610,21 @@ let referenceFlip = false;
 
 /** Writes `count` points of `local` to the world manifold (points halfway between the surfaces). */
 function writeManifold(
-  c: number,
-  s: number,
-  px: number,
-  py: number,
+  xf: Transform,
   count: number,
-  radiusA: number,
-  radiusB: number,
+  data: Float64Array,
+  baseA: number,
+  baseB: number,
   out: Manifold,
 ): void {
   out.pointCount = count;
   if (count === 0) return;
+  const radiusA = data[baseA + PACK_RADIUS];
+  const radiusB = data[baseB + PACK_RADIUS];
+  const c = xf.q.c;
+  const s = xf.q.s;
+  const px = xf.p.x;
+  const py = xf.p.y;
   const nx = local[L_NX];
   const ny = local[L_NY];
   const flip = referenceFlip;
@@ -660,8 +666,6 @@ export function collidePackedPolygons(
   const ax = xfA.p.x;
   const ay = xfA.p.y;
   setRelative(ac, as, ax, ay, xfB.q.c, xfB.q.s, xfB.p.x, xfB.p.y);
-  const radiusA = data[baseA + PACK_RADIUS];
-  const radiusB = data[baseB + PACK_RADIUS];
   let count: number;
   if (data[baseA + PACK_RECTANGLE] === 1 && data[baseB + PACK_RECTANGLE] === 1) {
     count = collideRectangles(data, baseA, baseB, speculativeDistance);
@@ -670,5 +674,5 @@ export function collidePackedPolygons(
     loadPolygonB(data, baseB);
     count = collideLoaded(speculativeDistance);
   }
-  writeManifold(ac, as, ax, ay, count, radiusA, radiusB, out);
+  writeManifold(xfA, count, data, baseA, baseB, out);
 }
