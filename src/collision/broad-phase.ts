@@ -35,6 +35,14 @@ class KeyedRayCastVisitor implements TreeRayCastVisitor {
   }
 }
 
+/** Axis-aligned boxes stored by column (the shape store's tight boxes). */
+export interface BoxColumns {
+  readonly minX: Float64Array;
+  readonly minY: Float64Array;
+  readonly maxX: Float64Array;
+  readonly maxY: Float64Array;
+}
+
 /**
  * Broad phase: one dynamic tree per body type holding fat boxes (tight box + margin; static proxies
  * get no margin), and a move buffer of proxies whose pairs must be looked for at the next
@@ -101,10 +109,16 @@ export class BroadPhase {
   }
 
   /**
-   * Takes the proxy's new tight box. Returns false (and does nothing) while it stays inside the stored
-   * fat box; otherwise stores a new fat box, buffers the proxy and returns true.
+   * Takes the proxy's new tight box, entry `i` of `boxes`. Returns false (and does nothing) while it
+   * stays inside the stored fat box; otherwise stores a new fat box, buffers the proxy and returns
+   * true. (The box comes as columns and an index: four doubles passed to a call V8 does not inline are
+   * boxed on the heap, and this runs for every moving shape every step.)
    */
-  moveProxy(key: number, minX: number, minY: number, maxX: number, maxY: number): boolean {
+  moveProxy(key: number, boxes: BoxColumns, i: number): boolean {
+    const minX = boxes.minX[i];
+    const minY = boxes.minY[i];
+    const maxX = boxes.maxX[i];
+    const maxY = boxes.maxY[i];
     const type = key & 3;
     const id = key >> 2;
     const tree = this.trees[type];

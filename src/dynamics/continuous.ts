@@ -97,7 +97,7 @@ export function solveBullets(core: WorldCore): void {
       ALL_TREES_MASK,
     );
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-      broad.moveProxy(shapes.proxyKey[s], shapes.minX[s], shapes.minY[s], shapes.maxX[s], shapes.maxY[s]);
+      broad.moveProxy(shapes.proxyKey[s], shapes, s);
     }
   }
   bulletCount = 0;

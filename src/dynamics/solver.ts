@@ -317,13 +317,7 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
       solveContinuous(core, b, c0x, c0y, q0c, q0s);
     }
     for (let sh = bodies.shapeHead[b]; sh !== -1; sh = shapes.next[sh]) {
-      broad.moveProxy(
-        shapes.proxyKey[sh],
-        shapes.minX[sh],
-        shapes.minY[sh],
-        shapes.maxX[sh],
-        shapes.maxY[sh],
-      );
+      broad.moveProxy(shapes.proxyKey[sh], shapes, sh);
     }
   }
   if (continuous) solveBullets(core);

@@ -165,7 +165,7 @@ export class WorldCore {
     for (let s = this.bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
       this.refreshShapeBounds(s);
       const key = shapes.proxyKey[s];
-      if (!this.broadPhase.moveProxy(key, shapes.minX[s], shapes.minY[s], shapes.maxX[s], shapes.maxY[s])) {
+      if (!this.broadPhase.moveProxy(key, shapes, s)) {
         this.broadPhase.bufferMove(key);
       }
     }

@@ -1,7 +1,7 @@
 import type { Transform } from '../math/vec2';
 import { LINEAR_SLOP } from './constants';
 import { PACK_RADIUS, PACK_VERTEX_STRIDE, PACK_VERTICES } from './packed';
-import { closestBetweenSegments, makeSegmentClosest } from './segment-distance';
+import { closestBetweenSegments, makeSegmentClosest, segmentPair } from './segment-distance';
 import type { Manifold } from './types';
 
 /** sin of the largest angle between two capsules that still rest on each other with two points */
@@ -80,7 +80,15 @@ function collideRoundedSegments(
   const q2x = c * b2x - s * b2y + px;
   const q2y = s * b2x + c * b2y + py;
 
-  closestBetweenSegments(a1x, a1y, a2x, a2y, q1x, q1y, q2x, q2y, closest);
+  segmentPair[0] = a1x;
+  segmentPair[1] = a1y;
+  segmentPair[2] = a2x;
+  segmentPair[3] = a2y;
+  segmentPair[4] = q1x;
+  segmentPair[5] = q1y;
+  segmentPair[6] = q2x;
+  segmentPair[7] = q2y;
+  closestBetweenSegments(closest);
   const radius = rA + rB;
   const limit = speculativeDistance + radius;
   if (!(closest.distanceSq < limit * limit)) return;

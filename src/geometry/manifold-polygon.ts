@@ -11,7 +11,7 @@ import {
   RECT_H0,
   RECT_H1,
 } from './packed';
-import { closestBetweenSegments, makeSegmentClosest } from './segment-distance';
+import { closestBetweenSegments, makeSegmentClosest, segmentPair } from './segment-distance';
 import { MAX_POLYGON_VERTICES, type Manifold } from './types';
 
 /*
@@ -369,7 +369,15 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
   local[L_NY] = ny;
   if (separation > VERTEX_PAIR_MIN_GAP) {
     // cores apart: when the edges' true distance exceeds the face separation, two vertices are closest
-    closestBetweenSegments(v1x, v1y, v2x, v2y, w1x, w1y, w2x, w2y, closest);
+    segmentPair[0] = v1x;
+    segmentPair[1] = v1y;
+    segmentPair[2] = v2x;
+    segmentPair[3] = v2y;
+    segmentPair[4] = w1x;
+    segmentPair[5] = w1y;
+    segmentPair[6] = w2x;
+    segmentPair[7] = w2y;
+    closestBetweenSegments(closest);
     const gap = separation + VERTEX_PAIR_MIN_GAP;
     if (closest.distanceSq > gap * gap) {
       const distance = Math.sqrt(closest.distanceSq);

@@ -18,21 +18,26 @@ function clamp01(x: number): number {
 }
 
 /**
- * Minimises |P(s) - Q(t)|^2 over the unit square: s from the infinite lines clamped to [0, 1], the
- * best t for that s, and if t had to be clamped, the best s for the clamped t. Both segments must
- * have non-zero length (shapes guarantee at least LINEAR_SLOP). Parallel segments take s = 0.
+ * The segments of the next closestBetweenSegments call: p1, p2, q1, q2 (x, y each). The narrow phase
+ * calls it for many pairs a step, and a double passed to a call V8 does not inline is boxed on the heap.
  */
-export function closestBetweenSegments(
-  p1x: number,
-  p1y: number,
-  p2x: number,
-  p2y: number,
-  q1x: number,
-  q1y: number,
-  q2x: number,
-  q2y: number,
-  out: SegmentClosest,
-): void {
+export const segmentPair = new Float64Array(8);
+
+/**
+ * Minimises |P(s) - Q(t)|^2 over the unit square for the segments in `segmentPair`: s from the
+ * infinite lines clamped to [0, 1], the best t for that s, and if t had to be clamped, the best s for
+ * the clamped t. Both segments must have non-zero length (shapes guarantee at least LINEAR_SLOP).
+ * Parallel segments take s = 0.
+ */
+export function closestBetweenSegments(out: SegmentClosest): void {
+  const p1x = segmentPair[0];
+  const p1y = segmentPair[1];
+  const p2x = segmentPair[2];
+  const p2y = segmentPair[3];
+  const q1x = segmentPair[4];
+  const q1y = segmentPair[5];
+  const q2x = segmentPair[6];
+  const q2y = segmentPair[7];
   const d1x = p2x - p1x;
   const d1y = p2y - p1y;
   const d2x = q2x - q1x;

@@ -10,6 +10,12 @@ import { IntList } from '../../../src/collision/int-list';
 import { PairSet } from '../../../src/collision/pair-set';
 import { makeBounds } from '../../../src/math/aabb';
 
+/** One box as the columns BroadPhase.moveProxy reads (entry 0). */
+function box(minX: number, minY: number, maxX: number, maxY: number) {
+  const column = (v: number) => Float64Array.of(v);
+  return { minX: column(minX), minY: column(minY), maxX: column(maxX), maxY: column(maxY) };
+}
+
 function rng(seed: number): () => number {
   let s = seed >>> 0;
   return () => {
@@ -106,7 +112,7 @@ function runScene(seed: number, steps: number, check: boolean): number[] {
         const nb: Box = [b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy];
         tight.set(key, nb);
         const inside = p.fat[0] <= nb[0] && p.fat[1] <= nb[1] && p.fat[2] >= nb[2] && p.fat[3] >= nb[3];
-        expect(bp.moveProxy(key, nb[0], nb[1], nb[2], nb[3])).toBe(!inside);
+        expect(bp.moveProxy(key, box(nb[0], nb[1], nb[2], nb[3]), 0)).toBe(!inside);
         if (!inside) {
           p.fat = fatten(nb, p.type);
           moved.add(key);
@@ -160,8 +166,8 @@ describe('BroadPhase', () => {
     expect(bp.getFatBounds(s, makeBounds())).toEqual({ minX: 0, minY: 0, maxX: 1, maxY: 1 });
     expect(bp.getFatBounds(d, makeBounds())).toEqual({ minX: -0.5, minY: -0.5, maxX: 1.5, maxY: 1.5 });
     expect(bp.moveCount).toBe(2);
-    expect(bp.moveProxy(d, 0.3, 0.3, 1.3, 1.3)).toBe(false);
-    expect(bp.moveProxy(d, 0.6, 0, 1.6, 1)).toBe(true);
+    expect(bp.moveProxy(d, box(0.3, 0.3, 1.3, 1.3), 0)).toBe(false);
+    expect(bp.moveProxy(d, box(0.6, 0, 1.6, 1), 0)).toBe(true);
     expect(bp.moveCount).toBe(2);
     const out = new IntList();
     bp.updatePairs(new PairSet(), out);
