@@ -132,7 +132,7 @@ function sweepAgainst(
     if ((shapes.flags[s] & SHAPE_SENSOR) !== 0) continue;
     const g = shapes.geometry[s]!;
     // swept box: the shape's box at the start of the step united with its box now
-    packedBounds(shapes.packed, s * PACK_STRIDE, start.q.c, start.q.s, start.p.x, start.p.y, bounds);
+    packedBounds(shapes.packed, s * PACK_STRIDE, start, bounds);
     const minX = Math.min(bounds.minX, shapes.minX[s]);
     const minY = Math.min(bounds.minY, shapes.minY[s]);
     const maxX = Math.max(bounds.maxX, shapes.maxX[s]);

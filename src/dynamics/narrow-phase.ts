@@ -1,3 +1,4 @@
+import { collideReach } from '../geometry/collide-reach';
 import { collidePacked } from '../geometry/manifold';
 import {
   lastSeparatingAxis,
@@ -91,6 +92,7 @@ export function updateContacts(core: WorldCore): void {
     } else {
       setReferenceHint(contacts.pointCount[c] > 0 ? referenceOwnerOfId(contacts.pointId[k0]) : -1);
       setSeparatingAxisHint(contacts.separatingAxis[c]);
+      collideReach[0] = reach;
       collidePacked(
         shapes.kind[shapeA],
         shapes.kind[shapeB],
@@ -99,7 +101,6 @@ export function updateContacts(core: WorldCore): void {
         core.fillTransform(bodyA, core.xfA),
         shapeB * PACK_STRIDE,
         core.fillTransform(bodyB, core.xfB),
-        reach,
         manifold,
       );
       contacts.separatingAxis[c] = lastSeparatingAxis();

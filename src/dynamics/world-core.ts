@@ -103,6 +103,8 @@ export class WorldCore {
   };
   readonly xfA: Transform = makeScratchTransform();
   readonly xfB: Transform = makeScratchTransform();
+  /** the body transform refreshShapeBounds passes (an object: doubles passed to a call are boxed) */
+  readonly xfBounds: Transform = makeScratchTransform();
 
   constructor(lengthUnitsPerMeter: number) {
     this.settings = makeSettings(lengthUnitsPerMeter);
@@ -121,17 +123,8 @@ export class WorldCore {
   /** Refreshes the tight AABB of a shape from its body's transform. */
   refreshShapeBounds(shape: number): void {
     const shapes = this.shapes;
-    const bodies = this.bodies;
     const b = shapes.body[shape];
-    packedBounds(
-      shapes.packed,
-      shape * PACK_STRIDE,
-      bodies.qc[b],
-      bodies.qs[b],
-      bodies.px[b],
-      bodies.py[b],
-      boundsScratch,
-    );
+    packedBounds(shapes.packed, shape * PACK_STRIDE, this.fillTransform(b, this.xfBounds), boundsScratch);
     shapes.minX[shape] = boundsScratch.minX;
     shapes.minY[shape] = boundsScratch.minY;
     shapes.maxX[shape] = boundsScratch.maxX;

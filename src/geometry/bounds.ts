@@ -15,15 +15,11 @@ import type { Geometry } from './types';
  * position (px, py): its vertices' box grown by its radius. Circles, capsules, segments and polygons
  * alike.
  */
-export function packedBounds(
-  data: Float64Array,
-  base: number,
-  c: number,
-  s: number,
-  px: number,
-  py: number,
-  out: Bounds,
-): void {
+export function packedBounds(data: Float64Array, base: number, xf: Transform, out: Bounds): void {
+  const c = xf.q.c;
+  const s = xf.q.s;
+  const px = xf.p.x;
+  const py = xf.p.y;
   let minX = Number.POSITIVE_INFINITY;
   let minY = Number.POSITIVE_INFINITY;
   let maxX = Number.NEGATIVE_INFINITY;
@@ -51,6 +47,6 @@ const scratch = new Float64Array(PACK_STRIDE);
 /** Tight world AABB of `g` placed at `xf`, including its radius. */
 export function computeShapeBounds(g: Geometry, xf: Transform, out: Bounds): Bounds {
   packGeometry(g, scratch, 0);
-  packedBounds(scratch, 0, xf.q.c, xf.q.s, xf.p.x, xf.p.y, out);
+  packedBounds(scratch, 0, xf, out);
   return out;
 }

@@ -1,4 +1,5 @@
 import type { Transform } from '../math/vec2';
+import { collideReach } from './collide-reach';
 import { LINEAR_SLOP } from './constants';
 import { PACK_RADIUS, PACK_VERTEX_STRIDE, PACK_VERTICES } from './packed';
 import { closestBetweenSegments, makeSegmentClosest, segmentPair } from './segment-distance';
@@ -62,9 +63,9 @@ function collideRoundedSegments(
   b2y: number,
   rB: number,
   xfB: Transform,
-  speculativeDistance: number,
   out: Manifold,
 ): void {
+  const speculativeDistance = collideReach[0];
   out.pointCount = 0;
   const qa = xfA.q;
   const qb = xfB.q;
@@ -160,7 +161,6 @@ export function collideRoundedSegmentPair(
   xfA: Transform,
   baseB: number,
   xfB: Transform,
-  speculativeDistance: number,
   out: Manifold,
 ): void {
   const a = baseA + PACK_VERTICES;
@@ -178,7 +178,6 @@ export function collideRoundedSegmentPair(
     data[b + PACK_VERTEX_STRIDE + 1],
     data[baseB + PACK_RADIUS],
     xfB,
-    speculativeDistance,
     out,
   );
 }

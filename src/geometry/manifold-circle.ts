@@ -1,4 +1,5 @@
 import type { Transform } from '../math/vec2';
+import { collideReach } from './collide-reach';
 import { PACK_COUNT, PACK_RADIUS, PACK_VERTEX_STRIDE, PACK_VERTICES } from './packed';
 import type { Manifold } from './types';
 
@@ -37,9 +38,9 @@ export function collideCircles(
   xfA: Transform,
   baseB: number,
   xfB: Transform,
-  speculativeDistance: number,
   out: Manifold,
 ): void {
+  const speculativeDistance = collideReach[0];
   out.pointCount = 0;
   const qa = xfA.q;
   const qb = xfB.q;
@@ -81,9 +82,9 @@ export function collideCircleRoundedSegment(
   xfA: Transform,
   baseB: number,
   xfB: Transform,
-  speculativeDistance: number,
   out: Manifold,
 ): void {
+  const speculativeDistance = collideReach[0];
   out.pointCount = 0;
   const k = baseB + PACK_VERTICES;
   const q1x = data[k];
@@ -138,9 +139,9 @@ export function collideCirclePolygon(
   xfA: Transform,
   baseB: number,
   xfB: Transform,
-  speculativeDistance: number,
   out: Manifold,
 ): void {
+  const speculativeDistance = collideReach[0];
   out.pointCount = 0;
   const qa = xfA.q;
   const qb = xfB.q;

@@ -1,4 +1,5 @@
 import type { Transform } from '../math/vec2';
+import { collideReach } from './collide-reach';
 import { LINEAR_SLOP, REFERENCE_FACE_TOLERANCE } from './constants';
 import {
   PACK_COUNT,
@@ -251,7 +252,8 @@ function referenceFromB(separationA: number, separationB: number): boolean {
 }
 
 /** The manifold of the loaded polyA and polyB in `local`; returns the point count. */
-function collideLoaded(speculativeDistance: number): number {
+function collideLoaded(): number {
+  const speculativeDistance = collideReach[0];
   const limit = speculativeDistance + polyA.radius + polyB.radius;
   if (axisHint !== 0) {
     const edge = (axisHint - 1) & 7;
@@ -443,12 +445,8 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
  * is the smallest vertex distance maxSeparation finds by trying every vertex. Faces, ids and points
  * then follow as there. Returns the point count (points in `local`).
  */
-function collideRectangles(
-  data: Float64Array,
-  baseA: number,
-  baseB: number,
-  speculativeDistance: number,
-): number {
+function collideRectangles(data: Float64Array, baseA: number, baseB: number): number {
+  const speculativeDistance = collideReach[0];
   const rc = relative[0];
   const rs = relative[1];
   const rx = relative[2];
@@ -666,7 +664,6 @@ export function collidePackedPolygons(
   xfA: Transform,
   baseB: number,
   xfB: Transform,
-  speculativeDistance: number,
   out: Manifold,
 ): void {
   const ac = xfA.q.c;
@@ -676,11 +673,11 @@ export function collidePackedPolygons(
   setRelative(ac, as, ax, ay, xfB.q.c, xfB.q.s, xfB.p.x, xfB.p.y);
   let count: number;
   if (data[baseA + PACK_RECTANGLE] === 1 && data[baseB + PACK_RECTANGLE] === 1) {
-    count = collideRectangles(data, baseA, baseB, speculativeDistance);
+    count = collideRectangles(data, baseA, baseB);
   } else {
     loadPolygonA(data, baseA);
     loadPolygonB(data, baseB);
-    count = collideLoaded(speculativeDistance);
+    count = collideLoaded();
   }
   writeManifold(xfA, count, data, baseA, baseB, out);
 }

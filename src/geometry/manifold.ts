@@ -1,4 +1,5 @@
 import type { Transform } from '../math/vec2';
+import { collideReach } from './collide-reach';
 import { collideRoundedSegmentPair } from './manifold-capsule';
 import { collideCirclePolygon, collideCircleRoundedSegment, collideCircles } from './manifold-circle';
 import { clearCollideHints, collidePackedPolygons } from './manifold-polygon';
@@ -25,7 +26,6 @@ type PairFunction = (
   xfA: Transform,
   baseB: number,
   xfB: Transform,
-  speculativeDistance: number,
   out: Manifold,
 ) => void;
 
@@ -35,7 +35,6 @@ function collideNothing(
   _xfA: Transform,
   _baseB: number,
   _xfB: Transform,
-  _speculativeDistance: number,
   out: Manifold,
 ): void {
   out.pointCount = 0;
@@ -68,8 +67,8 @@ const SWAPPED: readonly number[] = [0, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1,
  * Contact manifold of the shapes of kinds `kindA` and `kindB` packed in `data` at `baseA` and `baseB`
  * (see packed.ts: the narrow phase passes the shape store's records), placed at `xfA` and `xfB`:
  * world normal from A to B, up to two world points halfway between the surfaces, each with its
- * separation (< 0 overlapping) and feature id. Only points with separation < speculativeDistance are
- * kept. Allocation free.
+ * separation (< 0 overlapping) and feature id. Only points with separation below the speculative
+ * distance in `collideReach[0]` are kept (set it first: see collide-reach.ts). Allocation free.
  */
 export function collidePacked(
   kindA: number,
@@ -79,16 +78,15 @@ export function collidePacked(
   xfA: Transform,
   baseB: number,
   xfB: Transform,
-  speculativeDistance: number,
   out: Manifold,
 ): void {
   const pair = kindA * 4 + kindB;
   if (SWAPPED[pair] === 1) {
-    PAIRS[pair](data, baseB, xfB, baseA, xfA, speculativeDistance, out);
+    PAIRS[pair](data, baseB, xfB, baseA, xfA, out);
     out.normalX = -out.normalX;
     out.normalY = -out.normalY;
   } else {
-    PAIRS[pair](data, baseA, xfA, baseB, xfB, speculativeDistance, out);
+    PAIRS[pair](data, baseA, xfA, baseB, xfB, out);
   }
   clearCollideHints();
 }
@@ -106,5 +104,6 @@ export function collide(
 ): void {
   packGeometry(a, scratch, 0);
   packGeometry(b, scratch, PACK_STRIDE);
-  collidePacked(a.kind, b.kind, scratch, 0, xfA, PACK_STRIDE, xfB, speculativeDistance, out);
+  collideReach[0] = speculativeDistance;
+  collidePacked(a.kind, b.kind, scratch, 0, xfA, PACK_STRIDE, xfB, out);
 }

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { collideReach } from '../../../src/geometry/collide-reach';
 import { collide, collidePacked } from '../../../src/geometry/manifold';
 import { PACK_RECTANGLE, PACK_STRIDE, packGeometry } from '../../../src/geometry/packed';
 import { Shape } from '../../../src/geometry/shapes';
@@ -333,7 +334,8 @@ describe('collide: rectangles', () => {
       data[PACK_STRIDE + PACK_RECTANGLE] = 0;
     }
     const m = makeManifold();
-    collidePacked(a.kind, b.kind, data, 0, xfA, PACK_STRIDE, xfB, SPECULATIVE, m);
+    collideReach[0] = SPECULATIVE;
+    collidePacked(a.kind, b.kind, data, 0, xfA, PACK_STRIDE, xfB, m);
     return m;
   }
 
