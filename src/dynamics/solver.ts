@@ -85,7 +85,8 @@ function prepareJoints(core: WorldCore, h: number): void {
   ctx.warmTurnLimit = (2 * MAX_ROTATION_PER_SUBSTEP) / h;
   makeSoftness(JOINT_HERTZ, JOINT_DAMPING_RATIO, h, ctx.jointSoftness);
   const active = core.activeJoints;
-  active.length = 0;
+  // overwritten in place: `length = 0` would free the array's storage and the pushes grow it anew
+  let count = 0;
   for (const joint of core.joints) {
     if (
       (bodies.flags[joint.bodyA.slot] & FLAG_AWAKE) === 0 &&
@@ -93,8 +94,9 @@ function prepareJoints(core: WorldCore, h: number): void {
     ) {
       continue;
     }
-    active.push(joint);
+    active[count++] = joint;
   }
+  active.length = count;
   const rebuilt = core.jointTree.build(
     active,
     bodies.kind,
@@ -247,6 +249,24 @@ function reportHits(core: WorldCore): void {
  * Writes the new transforms of the awake bodies, resets their step deltas, advances their sleep
  * timers, clears forces and moves their proxies.
  */
+/**
+ * Holds the awake dynamic bodies to the speed limits. A loop of its own: in finalizeBodies the clamp
+ * was not inlined, and each call boxed its two limits on the heap.
+ */
+function clampAwakeVelocities(
+  bodies: BodyStore,
+  awake: Int32Array,
+  count: number,
+  maxSpeed: number,
+  maxW: number,
+): void {
+  const state = bodies.state;
+  for (let i = 0; i < count; i++) {
+    const b = awake[i];
+    if (bodies.kind[b] === DYNAMIC) clampVelocity(state, b * STATE_STRIDE, maxSpeed, maxW);
+  }
+}
+
 export function finalizeBodies(core: WorldCore, dt: number): void {
   const bodies = core.bodies;
   const state = bodies.state;
@@ -257,12 +277,16 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
   const enableSleep = core.enableSleep;
   const continuous = core.enableContinuous;
   // the relax pass after the last position update is not bounded by the substeps' clamps
-  const maxW = MAX_ROTATION_PER_SUBSTEP / (dt / core.subSteps);
-  const maxSpeed = core.settings.maxLinearSpeed;
+  clampAwakeVelocities(
+    bodies,
+    awake,
+    core.awakeCount,
+    core.settings.maxLinearSpeed,
+    MAX_ROTATION_PER_SUBSTEP / (dt / core.subSteps),
+  );
   for (let i = 0, n = core.awakeCount; i < n; i++) {
     const b = awake[i];
     const s = b * STATE_STRIDE;
-    if (bodies.kind[b] === DYNAMIC) clampVelocity(state, s, maxSpeed, maxW);
     const dqc = state[s + S_DQC];
     const dqs = state[s + S_DQS];
     const q0c = bodies.qc[b];
