@@ -57,7 +57,8 @@ export class GraphColoring {
   /**
    * Colours the contacts in a shuffled order and sorts them by colour, in the order they were added
    * within a colour (no two of a colour share a body that contacts move, so that order changes
-   * nothing but the memory access pattern). Returns how many there are.
+   * nothing but the memory access pattern; the overflow's contacts, which may share bodies, keep that
+   * order too). Returns how many there are.
    */
   finish(): number {
     const count = this.count;

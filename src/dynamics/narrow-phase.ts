@@ -5,6 +5,7 @@ import {
   referenceOwnerOfId,
   setReferenceHint,
   setSeparatingAxisHint,
+  VERTEX_PAIR_MIN_GAP,
 } from '../geometry/manifold-polygon';
 import { PACK_STRIDE } from '../geometry/packed';
 import type { Manifold, ManifoldPoint } from '../geometry/types';
@@ -86,8 +87,9 @@ export function updateContacts(core: WorldCore): void {
     const sensor = (flags & CONTACT_SENSOR) !== 0;
     const k0 = c * 2;
     const reach = sensor ? 0 : speculative;
-    if (tightBoxesApart(shapes, shapeA, shapeB, reach)) {
-      // no point can be closer than the boxes: the manifold would be empty
+    if (tightBoxesApart(shapes, shapeA, shapeB, reach + VERTEX_PAIR_MIN_GAP)) {
+      // the shapes are further apart than the boxes, and a point's separation is at most the vertex-pair
+      // tolerance below the shapes' distance (manifold-polygon.ts): the manifold would be empty
       manifold.pointCount = 0;
     } else {
       setReferenceHint(contacts.pointCount[c] > 0 ? referenceOwnerOfId(contacts.pointId[k0]) : -1);

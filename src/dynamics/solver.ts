@@ -85,7 +85,8 @@ function prepareJoints(core: WorldCore, h: number): void {
   ctx.warmTurnLimit = (2 * MAX_ROTATION_PER_SUBSTEP) / h;
   makeSoftness(JOINT_HERTZ, JOINT_DAMPING_RATIO, h, ctx.jointSoftness);
   const active = core.activeJoints;
-  // overwritten in place: `length = 0` would free the array's storage and the pushes grow it anew
+  // overwritten in place: `length = 0` would free the array's storage every step and the pushes grow
+  // it anew (only a list that shrinks by half or more is trimmed)
   let count = 0;
   for (const joint of core.joints) {
     if (
@@ -246,10 +247,6 @@ function reportHits(core: WorldCore): void {
 }
 
 /**
- * Writes the new transforms of the awake bodies, resets their step deltas, advances their sleep
- * timers, clears forces and moves their proxies.
- */
-/**
  * Holds the awake dynamic bodies to the speed limits. A loop of its own: in finalizeBodies the clamp
  * was not inlined, and each call boxed its two limits on the heap.
  */
@@ -267,6 +264,10 @@ function clampAwakeVelocities(
   }
 }
 
+/**
+ * Writes the new transforms of the awake bodies, resets their step deltas, advances their sleep
+ * timers, clears forces and moves their proxies.
+ */
 export function finalizeBodies(core: WorldCore, dt: number): void {
   const bodies = core.bodies;
   const state = bodies.state;

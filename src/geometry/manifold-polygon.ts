@@ -84,7 +84,11 @@ export function clearCollideHints(): void {
 export function referenceOwnerOfId(id: number): number {
   return (id & B_REFERENCE_BIT) !== 0 ? 1 : 0;
 }
-const VERTEX_PAIR_MIN_GAP = 0.1 * LINEAR_SLOP;
+/**
+ * How much more than the face separation the cores' true distance must be before separated cores get
+ * a vertex-pair point: up to this much, a point's separation may be below the true distance.
+ */
+export const VERTEX_PAIR_MIN_GAP = 0.1 * LINEAR_SLOP;
 
 /*
  * Separating axis memory (speed only, never the result): a pair whose cores were apart by more than
@@ -322,7 +326,6 @@ function collideLoaded(): number {
   faces[F_SEPARATION] = separation;
   faces[F_R_REF] = rRef;
   faces[F_R_INC] = rInc;
-  faces[F_SPECULATIVE] = speculativeDistance;
   return contactFromFaces(owner, refEdge, ref2, inc1, inc2);
 }
 
@@ -330,7 +333,7 @@ function collideLoaded(): number {
  * The inputs of contactFromFaces, in A's frame: a double passed to a call that is not inlined is boxed
  * on the heap, and this runs for every polygon pair of every step.
  */
-const faces = new Float64Array(14);
+const faces = new Float64Array(13);
 const F_NX = 0;
 const F_NY = 1;
 const F_V1X = 2;
@@ -344,7 +347,6 @@ const F_W2Y = 9;
 const F_SEPARATION = 10;
 const F_R_REF = 11;
 const F_R_INC = 12;
-const F_SPECULATIVE = 13;
 
 /**
  * Steps 3 and 4 above, once the faces are chosen (inputs in `faces`): reference edge `refEdge` from
@@ -366,7 +368,7 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
   const separation = faces[F_SEPARATION];
   const rRef = faces[F_R_REF];
   const rInc = faces[F_R_INC];
-  const speculativeDistance = faces[F_SPECULATIVE];
+  const speculativeDistance = collideReach[0];
   local[L_NX] = nx;
   local[L_NY] = ny;
   if (separation > VERTEX_PAIR_MIN_GAP) {
@@ -607,11 +609,10 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   faces[F_SEPARATION] = flip ? separationB : separationA;
   faces[F_R_REF] = flip ? radiusB : radiusA;
   faces[F_R_INC] = flip ? radiusA : radiusB;
-  faces[F_SPECULATIVE] = speculativeDistance;
   return contactFromFaces(flip ? B_REFERENCE_BIT : 0, refEdge, ref2, inc1, inc2);
 }
 
-/** Whether the last collideLoaded took its reference face from B. */
+/** Whether the last collideLoaded or collideRectangles took its reference face from B. */
 let referenceFlip = false;
 
 /** Writes `count` points of `local` to the world manifold (points halfway between the surfaces). */
