@@ -11,7 +11,7 @@ import { PACK_STRIDE } from '../geometry/packed';
 import type { Manifold, ManifoldPoint } from '../geometry/types';
 import { DYNAMIC, FLAG_AWAKE } from './body-store';
 import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
-import { SHAPE_SENSOR, type ShapeStore, shouldShapesCollide } from './shape-store';
+import { SHAPE_SENSOR, shouldShapesCollide } from './shape-store';
 import type { WorldCore } from './world-core';
 
 /** A manifold point of its own class, so that its fields stay unboxed doubles (see ScratchPoint). */
@@ -46,16 +46,6 @@ export function createNewContacts(core: WorldCore): void {
   }
 }
 
-/** Whether the shapes' tight boxes are more than `reach` apart along x or y. */
-function tightBoxesApart(shapes: ShapeStore, a: number, b: number, reach: number): boolean {
-  return (
-    shapes.minX[a] - shapes.maxX[b] > reach ||
-    shapes.minX[b] - shapes.maxX[a] > reach ||
-    shapes.minY[a] - shapes.maxY[b] > reach ||
-    shapes.minY[b] - shapes.maxY[a] > reach
-  );
-}
-
 /**
  * Updates the manifold of every contact with an awake body, keeps the impulses of points whose
  * feature id survived (warm starting), records begin/end touching, wakes sleeping bodies that an
@@ -79,7 +69,15 @@ export function updateContacts(core: WorldCore): void {
     if (!awakeA && !awakeB) continue;
     const shapeA = contacts.shapeA[c];
     const shapeB = contacts.shapeB[c];
-    if (!broad.fatBoxesOverlap(shapes.proxyKey[shapeA], shapes.proxyKey[shapeB])) {
+    // gap between the shapes' tight boxes (negative when they overlap)
+    const gap = Math.max(
+      shapes.minX[shapeA] - shapes.maxX[shapeB],
+      shapes.minX[shapeB] - shapes.maxX[shapeA],
+      shapes.minY[shapeA] - shapes.maxY[shapeB],
+      shapes.minY[shapeB] - shapes.maxY[shapeA],
+    );
+    // the fat boxes hold the tight ones: they can only have come apart if the tight ones are apart
+    if (gap > 0 && !broad.fatBoxesOverlap(shapes.proxyKey[shapeA], shapes.proxyKey[shapeB])) {
       core.destroyContact(c, true);
       continue;
     }
@@ -87,7 +85,7 @@ export function updateContacts(core: WorldCore): void {
     const sensor = (flags & CONTACT_SENSOR) !== 0;
     const k0 = c * 2;
     const reach = sensor ? 0 : speculative;
-    if (tightBoxesApart(shapes, shapeA, shapeB, reach + VERTEX_PAIR_MIN_GAP)) {
+    if (gap > reach + VERTEX_PAIR_MIN_GAP) {
       // the shapes are further apart than the boxes, and a point's separation is at most the vertex-pair
       // tolerance below the shapes' distance (manifold-polygon.ts): the manifold would be empty
       manifold.pointCount = 0;
