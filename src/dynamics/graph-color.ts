@@ -13,7 +13,7 @@ const OVERFLOW = COLORS;
  * whose left support always came before its right one was pushed the same way as all its row, and
  * a base-40 pyramid leaned 6 mm to one side within a quarter second (the creation order, colour by
  * colour), then crept 2 mm for seconds. A fixed random order still creeps 1.1-1.3 mm; an order new
- * every step lets the favours cancel: 0.5 mm. The shuffle is integer arithmetic seeded by the
+ * every step lets the favours cancel: 0.3 mm. The shuffle is integer arithmetic seeded by the
  * colouring's own step count, so it is deterministic and a restored snapshot continues it.
  */
 export class GraphColoring {
