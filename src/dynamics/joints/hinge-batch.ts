@@ -183,9 +183,14 @@ export class HingeBatch {
   solve(state: Float64Array, soft: Softness, useBias: boolean): void {
     const d = this.data;
     const ids = this.ids;
-    const biasRate = useBias ? soft.biasRate : 0;
-    const massScale = useBias ? soft.massScale : 1;
-    const impulseScale = useBias ? soft.impulseScale : 0;
+    // read in every call, so that both passes give the loads type feedback (a load that only the
+    // bias pass made left the compiled code without it: deoptimised, the function stayed unoptimised)
+    const softBiasRate = soft.biasRate;
+    const softMassScale = soft.massScale;
+    const softImpulseScale = soft.impulseScale;
+    const biasRate = useBias ? softBiasRate : 0;
+    const massScale = useBias ? softMassScale : 1;
+    const impulseScale = useBias ? softImpulseScale : 0;
     for (let i = 0, n = this.count; i < n; i++) {
       const base = i * HINGE_STRIDE;
       const sa = ids[2 * i] * STATE_STRIDE;

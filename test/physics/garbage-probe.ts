@@ -1,0 +1,99 @@
+/**
+ * Child-process probe for garbage.test.ts: builds one scene, warms it up, and prints the bytes the
+ * step allocates, per step, as JSON. A fresh process, because in a test worker that has run other
+ * files the engine's code carries their type feedback and can be deoptimised mid-measurement (the
+ * interpreter boxes every double), which made the figure swing from 1 KB to 76 KB a step.
+ */
+import { Session } from 'node:inspector';
+import { type Body, Shape, World } from '../../src/index';
+
+/**
+ * Bytes allocated by `run`, from V8's sampling heap profiler counting the objects the garbage
+ * collector has already taken too (it samples about one allocation per `interval` bytes).
+ */
+async function allocatedBytes(run: () => void, interval = 256): Promise<number> {
+  const session = new Session();
+  session.connect();
+  const post = (method: string, params?: object) =>
+    new Promise<unknown>((resolve, reject) =>
+      session.post(method, params, (error, result) => (error ? reject(error) : resolve(result))),
+    );
+  await post('HeapProfiler.enable');
+  await post('HeapProfiler.startSampling', {
+    samplingInterval: interval,
+    includeObjectsCollectedByMinorGC: true,
+    includeObjectsCollectedByMajorGC: true,
+  });
+  run();
+  const { profile } = (await post('HeapProfiler.stopSampling')) as {
+    profile: { head: { selfSize: number; children: unknown[] } };
+  };
+  session.disconnect();
+  let total = 0;
+  const walk = (node: { selfSize: number; children: unknown[] }) => {
+    total += node.selfSize;
+    for (const child of node.children) walk(child as typeof node);
+  };
+  walk(profile.head);
+  return total;
+}
+
+function pyramidWorld(base: number): World {
+  const world = new World({ enableSleep: false });
+  const ground = world.createBody({ position: { x: 0, y: -1 } });
+  ground.createShape(Shape.box(100, 1));
+  for (let row = 0; row < base; row++) {
+    for (let i = 0; i < base - row; i++) {
+      const b = world.createBody({
+        type: 'dynamic',
+        position: { x: i - (base - row - 1) / 2, y: 0.5 + row },
+      });
+      b.createShape(Shape.box(0.5, 0.5));
+    }
+  }
+  return world;
+}
+
+function hingeNetWorld(size: number): World {
+  const world = new World({ enableSleep: false });
+  const anchor = world.createBody();
+  const nodes: Body[] = [];
+  for (let row = 0; row < size; row++) {
+    for (let column = 0; column < size; column++) {
+      const position = { x: column, y: size - row };
+      const node = world.createBody({ type: 'dynamic', position });
+      node.createShape(Shape.circle(0.4));
+      nodes.push(node);
+      if (row === 0) world.createJoint({ type: 'revolute', bodyA: anchor, bodyB: node, anchor: position });
+      if (column > 0) {
+        const at = { x: column - 0.5, y: size - row };
+        world.createJoint({ type: 'revolute', bodyA: nodes[nodes.length - 2], bodyB: node, anchor: at });
+      }
+      if (row > 0) {
+        const at = { x: column, y: size - row + 0.5 };
+        world.createJoint({
+          type: 'revolute',
+          bodyA: nodes[nodes.length - 1 - size],
+          bodyB: node,
+          anchor: at,
+        });
+      }
+    }
+  }
+  return world;
+}
+
+const scenes: Record<string, () => World> = {
+  pyramid: () => pyramidWorld(20),
+  'hinge net': () => hingeNetWorld(20),
+};
+
+const name = process.argv[2] ?? 'pyramid';
+const world = scenes[name]();
+// optimised code first: the interpreter and the compiler allocate while warming up
+for (let i = 0; i < 300; i++) world.step(1 / 60);
+const steps = 60;
+const bytes = await allocatedBytes(() => {
+  for (let i = 0; i < steps; i++) world.step(1 / 60);
+});
+process.stdout.write(JSON.stringify({ name, perStep: bytes / steps }));
