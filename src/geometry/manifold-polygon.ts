@@ -441,6 +441,31 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
 }
 
 /**
+ * The edge of largest separation of a rectangle whose normals 0 and 1 put the other shape's centre at
+ * d0 and d1 from its own, the two reaching reach0 and reach1 towards each other along them (edges 2
+ * and 3 are the opposite sides), the first of equals as in maxSeparation; the separation goes to
+ * separationOut.
+ */
+function bestRectangleEdge(d0: number, d1: number, reach0: number, reach1: number): number {
+  let edge = 0;
+  let best = d0 - reach0;
+  if (d1 - reach1 > best) {
+    edge = 1;
+    best = d1 - reach1;
+  }
+  if (-d0 - reach0 > best) {
+    edge = 2;
+    best = -d0 - reach0;
+  }
+  if (-d1 - reach1 > best) {
+    edge = 3;
+    best = -d1 - reach1;
+  }
+  separationOut[0] = best;
+  return edge;
+}
+
+/**
  * collideLoaded for two packed rectangles (see packed.ts), read straight from their records with B
  * placed by `relative`. The SAT takes each rectangle's two axes: an edge's separation is the centres'
  * offset along its normal, less its own half extent and the other rectangle's extent along it, which
@@ -489,20 +514,8 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   const dA1 = n1x * dx + n1y * dy;
   const reachA0 = hA0 + hB0 * c00 + hB1 * c01;
   const reachA1 = hA1 + hB0 * c10 + hB1 * c11;
-  let edgeA = 0;
-  let separationA = dA0 - reachA0;
-  if (dA1 - reachA1 > separationA) {
-    edgeA = 1;
-    separationA = dA1 - reachA1;
-  }
-  if (-dA0 - reachA0 > separationA) {
-    edgeA = 2;
-    separationA = -dA0 - reachA0;
-  }
-  if (-dA1 - reachA1 > separationA) {
-    edgeA = 3;
-    separationA = -dA1 - reachA1;
-  }
+  const edgeA = bestRectangleEdge(dA0, dA1, reachA0, reachA1);
+  const separationA = separationOut[0];
   if (separationA >= limit) {
     separatingAxis = edgeA + 1;
     return 0;
@@ -511,20 +524,8 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   const dB1 = -(m1x * dx + m1y * dy);
   const reachB0 = hB0 + hA0 * c00 + hA1 * c10;
   const reachB1 = hB1 + hA0 * c01 + hA1 * c11;
-  let edgeB = 0;
-  let separationB = dB0 - reachB0;
-  if (dB1 - reachB1 > separationB) {
-    edgeB = 1;
-    separationB = dB1 - reachB1;
-  }
-  if (-dB0 - reachB0 > separationB) {
-    edgeB = 2;
-    separationB = -dB0 - reachB0;
-  }
-  if (-dB1 - reachB1 > separationB) {
-    edgeB = 3;
-    separationB = -dB1 - reachB1;
-  }
+  const edgeB = bestRectangleEdge(dB0, dB1, reachB0, reachB1);
+  const separationB = separationOut[0];
   if (separationB >= limit) {
     separatingAxis = B_AXIS + edgeB + 1;
     return 0;

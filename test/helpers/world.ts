@@ -32,6 +32,22 @@ export function groundWorld(
   return { world, ground };
 }
 
+/** A pyramid of 1 m boxes, `base` wide, standing on y = 0 around x = 0, bottom row first. */
+export function pyramid(world: World, base: number): Body[] {
+  const boxes: Body[] = [];
+  for (let row = 0; row < base; row++) {
+    for (let i = 0; i < base - row; i++) {
+      const b = world.createBody({
+        type: 'dynamic',
+        position: { x: i - (base - row - 1) / 2, y: 0.5 + row },
+      });
+      b.createShape(Shape.box(0.5, 0.5));
+      boxes.push(b);
+    }
+  }
+  return boxes;
+}
+
 export function dist(a: { x: number; y: number }, b: { x: number; y: number }): number {
   return Math.sqrt((a.x - b.x) ** 2 + (a.y - b.y) ** 2);
 }

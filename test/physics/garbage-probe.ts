@@ -6,6 +6,7 @@
  */
 import { Session } from 'node:inspector';
 import { type Body, Shape, World } from '../../src/index';
+import { groundWorld, pyramid } from '../helpers/world';
 
 /**
  * Bytes allocated by `run`, from V8's sampling heap profiler counting the objects the garbage
@@ -38,22 +39,6 @@ async function allocatedBytes(run: () => void, interval = 256): Promise<number> 
   return total;
 }
 
-function pyramidWorld(base: number): World {
-  const world = new World({ enableSleep: false });
-  const ground = world.createBody({ position: { x: 0, y: -1 } });
-  ground.createShape(Shape.box(100, 1));
-  for (let row = 0; row < base; row++) {
-    for (let i = 0; i < base - row; i++) {
-      const b = world.createBody({
-        type: 'dynamic',
-        position: { x: i - (base - row - 1) / 2, y: 0.5 + row },
-      });
-      b.createShape(Shape.box(0.5, 0.5));
-    }
-  }
-  return world;
-}
-
 function hingeNetWorld(size: number): World {
   const world = new World({ enableSleep: false });
   const anchor = world.createBody();
@@ -84,7 +69,11 @@ function hingeNetWorld(size: number): World {
 }
 
 const scenes: Record<string, () => World> = {
-  pyramid: () => pyramidWorld(20),
+  pyramid: () => {
+    const { world } = groundWorld({ enableSleep: false });
+    pyramid(world, 20);
+    return world;
+  },
   'hinge net': () => hingeNetWorld(20),
 };
 

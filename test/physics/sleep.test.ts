@@ -1,21 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { type Body, Shape } from '../../src/index';
-import { dist, groundWorld, run } from '../helpers/world';
-
-function pyramid(world: import('../../src/index').World, base: number): Body[] {
-  const boxes: Body[] = [];
-  for (let row = 0; row < base; row++) {
-    for (let i = 0; i < base - row; i++) {
-      const b = world.createBody({
-        type: 'dynamic',
-        position: { x: i - (base - row - 1) / 2, y: 0.5 + row },
-      });
-      b.createShape(Shape.box(0.5, 0.5));
-      boxes.push(b);
-    }
-  }
-  return boxes;
-}
+import { dist, groundWorld, pyramid, run } from '../helpers/world';
 
 describe('sleeping', () => {
   it('a resting pyramid sleeps; a ball thrown at it wakes the island and the pyramid reacts', () => {

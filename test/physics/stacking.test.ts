@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { type Body, Shape, type World } from '../../src/index';
-import { dist, groundWorld, run, runYielding } from '../helpers/world';
+import { dist, groundWorld, pyramid, run, runYielding } from '../helpers/world';
 
 function verticalStack(world: World, n: number): Body[] {
   const boxes: Body[] = [];
@@ -8,19 +8,6 @@ function verticalStack(world: World, n: number): Body[] {
     const b = world.createBody({ type: 'dynamic', position: { x: 0, y: 0.5 + i } });
     b.createShape(Shape.box(0.5, 0.5));
     boxes.push(b);
-  }
-  return boxes;
-}
-
-function pyramid(world: World, base: number): Body[] {
-  const boxes: Body[] = [];
-  for (let row = 0; row < base; row++) {
-    for (let i = 0; i < base - row; i++) {
-      const x = (i - (base - row - 1) / 2) * 1.0;
-      const b = world.createBody({ type: 'dynamic', position: { x, y: 0.5 + row } });
-      b.createShape(Shape.box(0.5, 0.5));
-      boxes.push(b);
-    }
   }
   return boxes;
 }
