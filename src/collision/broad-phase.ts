@@ -3,12 +3,12 @@ import { DynamicTree, type TreeRayCastVisitor } from './dynamic-tree';
 import { IntList } from './int-list';
 import type { PairSet } from './pair-set';
 
-/** Body type of a proxy: 0 = static, 1 = kinematic, 2 = dynamic. */
-export type ProxyType = 0 | 1 | 2;
-
-export const STATIC_PROXY = 0;
-export const KINEMATIC_PROXY = 1;
-export const DYNAMIC_PROXY = 2;
+/** Body type of a proxy. */
+export enum ProxyType {
+  STATIC = 0,
+  KINEMATIC = 1,
+  DYNAMIC = 2,
+}
 
 /** Proxy key = (tree proxy id << 2) | type. */
 export function proxyKeyType(key: number): ProxyType {
@@ -84,7 +84,7 @@ export class BroadPhase {
     shapeId: number,
     forcePairCreation: boolean,
   ): number {
-    const m = bodyType === STATIC_PROXY ? 0 : this.aabbMargin;
+    const m = bodyType === ProxyType.STATIC ? 0 : this.aabbMargin;
     const tree = this.trees[bodyType];
     const id = tree.createProxy(minX - m, minY - m, maxX + m, maxY + m, shapeId);
     if (this.moveIndex[bodyType].length < tree.capacity) {
@@ -93,7 +93,7 @@ export class BroadPhase {
       this.moveIndex[bodyType] = index;
     }
     const key = (id << 2) | bodyType;
-    if (bodyType !== STATIC_PROXY || forcePairCreation) this.bufferMove(key);
+    if (bodyType !== ProxyType.STATIC || forcePairCreation) this.bufferMove(key);
     return key;
   }
 
@@ -130,7 +130,7 @@ export class BroadPhase {
     ) {
       return false;
     }
-    const m = type === STATIC_PROXY ? 0 : this.aabbMargin;
+    const m = type === ProxyType.STATIC ? 0 : this.aabbMargin;
     tree.moveProxy(id, minX - m, minY - m, maxX + m, maxY + m);
     this.bufferMove(key);
     return true;
@@ -164,11 +164,11 @@ export class BroadPhase {
       const maxX = tree.getMaxX(id);
       const maxY = tree.getMaxY(id);
       const shapeId = tree.getUserData(id);
-      if (type === DYNAMIC_PROXY) {
-        this.findPairs(key, shapeId, minX, minY, maxX, maxY, STATIC_PROXY, existing, out);
-        this.findPairs(key, shapeId, minX, minY, maxX, maxY, KINEMATIC_PROXY, existing, out);
+      if (type === ProxyType.DYNAMIC) {
+        this.findPairs(key, shapeId, minX, minY, maxX, maxY, ProxyType.STATIC, existing, out);
+        this.findPairs(key, shapeId, minX, minY, maxX, maxY, ProxyType.KINEMATIC, existing, out);
       }
-      this.findPairs(key, shapeId, minX, minY, maxX, maxY, DYNAMIC_PROXY, existing, out);
+      this.findPairs(key, shapeId, minX, minY, maxX, maxY, ProxyType.DYNAMIC, existing, out);
     }
     for (let i = 0; i < buffer.length; i++) {
       const key = buffer.data[i];
@@ -235,7 +235,7 @@ export class BroadPhase {
 
   /** Rebuilds the static tree for query quality, e.g. after loading a level. */
   rebuild(): void {
-    this.trees[STATIC_PROXY].rebuild();
+    this.trees[ProxyType.STATIC].rebuild();
   }
 
   private findPairs(

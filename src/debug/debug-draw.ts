@@ -5,22 +5,13 @@
  * it never changes the world, so drawing can never affect the simulation.
  */
 import type { Body } from '../dynamics/body';
-import {
-  DYNAMIC,
-  FLAG_AWAKE,
-  FLAG_BULLET,
-  KINEMATIC,
-  S_VX,
-  S_VY,
-  STATE_STRIDE,
-  STATIC,
-} from '../dynamics/body-store';
-import { CONTACT_SENSOR, CONTACT_TOUCHING } from '../dynamics/contact-store';
+import { BodyFlag, BodyKind, S } from '../dynamics/body-store';
+import { ContactFlag } from '../dynamics/contact-store';
 import type { MouseJoint } from '../dynamics/joints/mouse-joint';
 import type { ShapeHandle } from '../dynamics/shape';
-import { SHAPE_SENSOR } from '../dynamics/shape-store';
+import { ShapeFlag } from '../dynamics/shape-store';
 import type { World } from '../dynamics/world';
-import { CAPSULE, CIRCLE, POLYGON, SEGMENT } from '../geometry/types';
+import { ShapeKind } from '../geometry/types';
 import type { Transform, Vec2 } from '../math/vec2';
 
 /** A colour as 0xRRGGBB. */
@@ -141,9 +132,9 @@ export function defaultBodyColor(world: World, body: Body): Color {
   const bodies = world.core.bodies;
   const b = body.slot;
   const kind = bodies.kind[b];
-  if (kind === STATIC) return colors.static;
-  if (kind === KINEMATIC) return colors.kinematic;
-  if ((bodies.flags[b] & FLAG_BULLET) !== 0) return colors.bullet;
+  if (kind === BodyKind.STATIC) return colors.static;
+  if (kind === BodyKind.KINEMATIC) return colors.kinematic;
+  if ((bodies.flags[b] & BodyFlag.BULLET) !== 0) return colors.bullet;
   return dynamicPalette[b % dynamicPalette.length];
 }
 
@@ -200,11 +191,11 @@ function drawShapes(world: World, draw: DebugDraw, flags: DebugDrawFlags, option
     drawnTransform(world, body, options, xf);
     if (draw.drawBody?.(body, xf)) continue;
     let color = options?.colorOf?.(body) ?? defaultBodyColor(world, body);
-    const sleeping = bodies.kind[b] === DYNAMIC && (bodies.flags[b] & FLAG_AWAKE) === 0;
+    const sleeping = bodies.kind[b] === BodyKind.DYNAMIC && (bodies.flags[b] & BodyFlag.AWAKE) === 0;
     if (sleeping && flags.sleeping) color = mixColor(color, colors.sleepingTint, 0.6);
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
       const g = shapes.geometry[s]!;
-      const sensor = (shapes.flags[s] & SHAPE_SENSOR) !== 0;
+      const sensor = (shapes.flags[s] & ShapeFlag.SENSOR) !== 0;
       style.body = body;
       style.shape = world.shapeHandles[s]!;
       if (sensor) {
@@ -217,16 +208,16 @@ function drawShapes(world: World, draw: DebugDraw, flags: DebugDrawFlags, option
         style.stroke = flags.wireframe ? color : scaleColor(color, 0.65);
       }
       switch (g.kind) {
-        case CIRCLE:
+        case ShapeKind.CIRCLE:
           draw.drawCircle(xf, g.center, g.radius, style);
           break;
-        case CAPSULE:
+        case ShapeKind.CAPSULE:
           draw.drawCapsule(xf, g.center1, g.center2, g.radius, style);
           break;
-        case POLYGON:
+        case ShapeKind.POLYGON:
           draw.drawPolygon(xf, g.vertices, g.radius, style);
           break;
-        case SEGMENT: {
+        case ShapeKind.SEGMENT: {
           transformPoint(xf, g.point1, pA);
           transformPoint(xf, g.point2, pB);
           draw.drawLine(pA, pB, sensor ? colors.sensor : color);
@@ -261,7 +252,7 @@ function drawContacts(world: World, draw: DebugDraw, flags: DebugDrawFlags, opti
   for (let c = 0; c < contacts.slotCount; c++) {
     if (contacts.alive[c] === 0) continue;
     const f = contacts.flags[c];
-    if ((f & CONTACT_TOUCHING) === 0 || (f & CONTACT_SENSOR) !== 0) continue;
+    if ((f & ContactFlag.TOUCHING) === 0 || (f & ContactFlag.SENSOR) !== 0) continue;
     const bodyA = world.bodyHandle(contacts.bodyA[c]);
     const n = contacts.pointCount[c];
     for (let i = 0; i < n; i++) {
@@ -292,7 +283,7 @@ function drawVelocitiesAndCenters(
   const xf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
   const center: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
   for (let b = 0; b < bodies.slotCount; b++) {
-    if (bodies.alive[b] === 0 || bodies.kind[b] === STATIC) continue;
+    if (bodies.alive[b] === 0 || bodies.kind[b] === BodyKind.STATIC) continue;
     const body = world.bodyHandle(b);
     drawnTransform(world, body, options, xf);
     transformPoint(xf, { x: bodies.lcx[b], y: bodies.lcy[b] }, center.p);
@@ -300,9 +291,9 @@ function drawVelocitiesAndCenters(
     center.q.s = xf.q.s;
     if (flags.centersOfMass) draw.drawTransform(center);
     if (flags.velocities) {
-      const st = b * STATE_STRIDE;
-      const vx = bodies.state[st + S_VX];
-      const vy = bodies.state[st + S_VY];
+      const st = b * S.STRIDE;
+      const vx = bodies.state[st + S.VX];
+      const vy = bodies.state[st + S.VY];
       // a tenth of a second of travel
       pB.x = center.p.x + vx * 0.1;
       pB.y = center.p.y + vy * 0.1;

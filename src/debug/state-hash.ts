@@ -1,4 +1,4 @@
-import { STATE_STRIDE } from '../dynamics/body-store';
+import { S } from '../dynamics/body-store';
 import type { World } from '../dynamics/world';
 
 const f64 = new Float64Array(1);
@@ -29,7 +29,7 @@ export function stateHash(world: World): number {
     mix(bodies.py[b]);
     mix(bodies.qc[b]);
     mix(bodies.qs[b]);
-    const s = b * STATE_STRIDE;
+    const s = b * S.STRIDE;
     mix(bodies.state[s]);
     mix(bodies.state[s + 1]);
     mix(bodies.state[s + 2]);

@@ -1,34 +1,23 @@
 import { MAX_ROTATION_PER_SUBSTEP } from '../core/settings';
-import {
-  type BodyStore,
-  DYNAMIC,
-  S_DPX,
-  S_DPY,
-  S_DQC,
-  S_DQS,
-  S_VX,
-  S_VY,
-  S_W,
-  STATE_STRIDE,
-} from './body-store';
+import { BodyKind, type BodyStore, S } from './body-store';
 
 /**
  * Clamps the velocity of the body at state offset `s` to `maxSpeed` and `maxW`; an infinite or NaN
  * velocity becomes zero. Written so that NaN fails the comparisons and takes the clamp.
  */
 export function clampVelocity(state: Float64Array, s: number, maxSpeed: number, maxW: number): void {
-  const vx = state[s + S_VX];
-  const vy = state[s + S_VY];
-  const w = state[s + S_W];
+  const vx = state[s + S.VX];
+  const vy = state[s + S.VY];
+  const w = state[s + S.W];
   const v2 = vx * vx + vy * vy;
   if (!(v2 <= maxSpeed * maxSpeed)) {
     // finite: scaled onto the limit; infinite or NaN: stopped
     const finite = v2 < Number.POSITIVE_INFINITY;
     const scale = finite ? maxSpeed / Math.sqrt(v2) : 0;
-    state[s + S_VX] = finite ? scale * vx : 0;
-    state[s + S_VY] = finite ? scale * vy : 0;
+    state[s + S.VX] = finite ? scale * vx : 0;
+    state[s + S.VY] = finite ? scale * vy : 0;
   }
-  if (!(w <= maxW && w >= -maxW)) state[s + S_W] = w > maxW ? maxW : w < -maxW ? -maxW : 0;
+  if (!(w <= maxW && w >= -maxW)) state[s + S.W] = w > maxW ? maxW : w < -maxW ? -maxW : 0;
 }
 
 /**
@@ -57,17 +46,17 @@ export function integrateVelocities(
   const maxW = MAX_ROTATION_PER_SUBSTEP / h;
   for (let i = 0; i < awakeCount; i++) {
     const b = awake[i];
-    if (kind[b] !== DYNAMIC) continue;
-    const s = b * STATE_STRIDE;
+    if (kind[b] !== BodyKind.DYNAMIC) continue;
+    const s = b * S.STRIDE;
     const m = invMass[b];
     const g = gravityScale[b];
     const linearFactor = 1 / (1 + h * linearDamping[b]);
-    const vx = (state[s + S_VX] + h * (g * gx + m * fx[b])) * linearFactor;
-    const vy = (state[s + S_VY] + h * (g * gy + m * fy[b])) * linearFactor;
-    const w = (state[s + S_W] + h * invInertia[b] * torque[b]) / (1 + h * angularDamping[b]);
-    state[s + S_VX] = vx;
-    state[s + S_VY] = vy;
-    state[s + S_W] = w;
+    const vx = (state[s + S.VX] + h * (g * gx + m * fx[b])) * linearFactor;
+    const vy = (state[s + S.VY] + h * (g * gy + m * fy[b])) * linearFactor;
+    const w = (state[s + S.W] + h * invInertia[b] * torque[b]) / (1 + h * angularDamping[b]);
+    state[s + S.VX] = vx;
+    state[s + S.VY] = vy;
+    state[s + S.W] = w;
     clampVelocity(state, s, maxLinearSpeed, maxW);
   }
 }
@@ -91,25 +80,25 @@ export function integratePositions(
   const maxW = MAX_ROTATION_PER_SUBSTEP / h;
   for (let i = 0; i < awakeCount; i++) {
     const b = awake[i];
-    const s = b * STATE_STRIDE;
-    if (kind[b] === DYNAMIC) clampVelocity(state, s, maxLinearSpeed, maxW);
-    const vx = state[s + S_VX];
-    const vy = state[s + S_VY];
-    const w = state[s + S_W];
-    state[s + S_DPX] += h * vx;
-    state[s + S_DPY] += h * vy;
+    const s = b * S.STRIDE;
+    if (kind[b] === BodyKind.DYNAMIC) clampVelocity(state, s, maxLinearSpeed, maxW);
+    const vx = state[s + S.VX];
+    const vy = state[s + S.VY];
+    const w = state[s + S.W];
+    state[s + S.DPX] += h * vx;
+    state[s + S.DPY] += h * vy;
     // rotate by the angle h w: its cosine and sine from their Taylor series (|h w| <= pi / 4, so the
     // angle is exact to ~1e-5 at the clamp and to rounding at everyday speeds), then renormalise
     const x = h * w;
     const x2 = x * x;
     const rc = 1 - x2 * (0.5 - x2 * (1 / 24 - x2 / 720));
     const rs = x * (1 - x2 * (1 / 6 - x2 * (1 / 120 - x2 / 5040)));
-    const c = state[s + S_DQC];
-    const sn = state[s + S_DQS];
+    const c = state[s + S.DQC];
+    const sn = state[s + S.DQS];
     const nc = c * rc - sn * rs;
     const ns = sn * rc + c * rs;
     const inv = 1 / Math.sqrt(nc * nc + ns * ns);
-    state[s + S_DQC] = nc * inv;
-    state[s + S_DQS] = ns * inv;
+    state[s + S.DQC] = nc * inv;
+    state[s + S.DQS] = ns * inv;
   }
 }

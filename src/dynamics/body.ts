@@ -2,19 +2,7 @@ import { checkBoolean, checkFinite, checkNonNegative, checkVec2, FulcrumError, f
 import type { Geometry } from '../geometry/types';
 import { makeRotInto, rotAngle } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
-import {
-  DYNAMIC,
-  FLAG_ALLOW_SLEEP,
-  FLAG_AWAKE,
-  FLAG_BULLET,
-  FLAG_FIXED_ROTATION,
-  KINEMATIC,
-  S_VX,
-  S_VY,
-  S_W,
-  STATE_STRIDE,
-  STATIC,
-} from './body-store';
+import { BodyFlag, BodyKind, S } from './body-store';
 import type { Joint } from './joints/joint';
 import type { ShapeDef, ShapeHandle } from './shape';
 import type { World } from './world';
@@ -128,13 +116,13 @@ export class Body {
   }
 
   get linearVelocity(): Vec2 {
-    const s = this.check() * STATE_STRIDE;
+    const s = this.check() * S.STRIDE;
     const state = this.world.core.bodies.state;
-    return { x: state[s + S_VX], y: state[s + S_VY] };
+    return { x: state[s + S.VX], y: state[s + S.VY] };
   }
 
   get angularVelocity(): number {
-    return this.world.core.bodies.state[this.check() * STATE_STRIDE + S_W];
+    return this.world.core.bodies.state[this.check() * S.STRIDE + S.W];
   }
 
   get mass(): number {
@@ -147,7 +135,7 @@ export class Body {
   }
 
   get isAwake(): boolean {
-    return (this.world.core.bodies.flags[this.check()] & FLAG_AWAKE) !== 0;
+    return (this.world.core.bodies.flags[this.check()] & BodyFlag.AWAKE) !== 0;
   }
 
   get linearDamping(): number {
@@ -163,15 +151,15 @@ export class Body {
   }
 
   get fixedRotation(): boolean {
-    return (this.world.core.bodies.flags[this.check()] & FLAG_FIXED_ROTATION) !== 0;
+    return (this.world.core.bodies.flags[this.check()] & BodyFlag.FIXED_ROTATION) !== 0;
   }
 
   get bullet(): boolean {
-    return (this.world.core.bodies.flags[this.check()] & FLAG_BULLET) !== 0;
+    return (this.world.core.bodies.flags[this.check()] & BodyFlag.BULLET) !== 0;
   }
 
   get allowSleep(): boolean {
-    return (this.world.core.bodies.flags[this.check()] & FLAG_ALLOW_SLEEP) !== 0;
+    return (this.world.core.bodies.flags[this.check()] & BodyFlag.ALLOW_SLEEP) !== 0;
   }
 
   /** joints attached to this body, in creation order */
@@ -226,10 +214,10 @@ export class Body {
     const b = this.unlocked();
     const v = checkVec2('velocity', velocity);
     const core = this.world.core;
-    if (core.bodies.kind[b] === STATIC) return;
-    const s = b * STATE_STRIDE;
-    core.bodies.state[s + S_VX] = v.x;
-    core.bodies.state[s + S_VY] = v.y;
+    if (core.bodies.kind[b] === BodyKind.STATIC) return;
+    const s = b * S.STRIDE;
+    core.bodies.state[s + S.VX] = v.x;
+    core.bodies.state[s + S.VY] = v.y;
     this.wakeWithNeighbours(b);
   }
 
@@ -237,9 +225,10 @@ export class Body {
     const b = this.unlocked();
     const w = checkFinite('angularVelocity', omega);
     const core = this.world.core;
-    if (core.bodies.kind[b] === STATIC) return;
-    if ((core.bodies.flags[b] & FLAG_FIXED_ROTATION) !== 0 && core.bodies.kind[b] === DYNAMIC) return;
-    core.bodies.state[b * STATE_STRIDE + S_W] = w;
+    if (core.bodies.kind[b] === BodyKind.STATIC) return;
+    if ((core.bodies.flags[b] & BodyFlag.FIXED_ROTATION) !== 0 && core.bodies.kind[b] === BodyKind.DYNAMIC)
+      return;
+    core.bodies.state[b * S.STRIDE + S.W] = w;
     this.wakeWithNeighbours(b);
   }
 
@@ -247,7 +236,7 @@ export class Body {
   private wakeWithNeighbours(b: number): void {
     const core = this.world.core;
     core.wake(b);
-    if (core.bodies.kind[b] === KINEMATIC) core.wakeTouching(b);
+    if (core.bodies.kind[b] === BodyKind.KINEMATIC) core.wakeTouching(b);
   }
 
   setLinearDamping(damping: number): void {
@@ -270,9 +259,9 @@ export class Body {
     const b = this.unlocked();
     checkBoolean('fixedRotation', fixed);
     const core = this.world.core;
-    if (fixed) core.bodies.flags[b] |= FLAG_FIXED_ROTATION;
-    else core.bodies.flags[b] &= ~FLAG_FIXED_ROTATION;
-    if (fixed) core.bodies.state[b * STATE_STRIDE + S_W] = 0;
+    if (fixed) core.bodies.flags[b] |= BodyFlag.FIXED_ROTATION;
+    else core.bodies.flags[b] &= ~BodyFlag.FIXED_ROTATION;
+    if (fixed) core.bodies.state[b * S.STRIDE + S.W] = 0;
     core.updateMass(b);
     core.wake(b);
   }
@@ -280,17 +269,17 @@ export class Body {
   setBullet(bullet: boolean): void {
     const b = this.unlocked();
     checkBoolean('bullet', bullet);
-    if (bullet) this.world.core.bodies.flags[b] |= FLAG_BULLET;
-    else this.world.core.bodies.flags[b] &= ~FLAG_BULLET;
+    if (bullet) this.world.core.bodies.flags[b] |= BodyFlag.BULLET;
+    else this.world.core.bodies.flags[b] &= ~BodyFlag.BULLET;
   }
 
   setAllowSleep(allow: boolean): void {
     const b = this.unlocked();
     checkBoolean('allowSleep', allow);
     const core = this.world.core;
-    if (allow) core.bodies.flags[b] |= FLAG_ALLOW_SLEEP;
+    if (allow) core.bodies.flags[b] |= BodyFlag.ALLOW_SLEEP;
     else {
-      core.bodies.flags[b] &= ~FLAG_ALLOW_SLEEP;
+      core.bodies.flags[b] &= ~BodyFlag.ALLOW_SLEEP;
       core.wake(b);
     }
   }
@@ -316,7 +305,7 @@ export class Body {
     const core = this.world.core;
     const bodies = core.bodies;
     const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkVec2('point', point);
-    if (bodies.kind[b] !== DYNAMIC) return;
+    if (bodies.kind[b] !== BodyKind.DYNAMIC) return;
     bodies.fx[b] += f.x;
     bodies.fy[b] += f.y;
     bodies.torque[b] += (p.x - bodies.cx[b]) * f.y - (p.y - bodies.cy[b]) * f.x;
@@ -327,7 +316,7 @@ export class Body {
     const b = this.unlocked();
     const t = checkFinite('torque', torque);
     const core = this.world.core;
-    if (core.bodies.kind[b] !== DYNAMIC) return;
+    if (core.bodies.kind[b] !== BodyKind.DYNAMIC) return;
     core.bodies.torque[b] += t;
     core.wake(b);
   }
@@ -339,11 +328,11 @@ export class Body {
     const core = this.world.core;
     const bodies = core.bodies;
     const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkVec2('point', point);
-    if (bodies.kind[b] !== DYNAMIC) return;
-    const s = b * STATE_STRIDE;
-    bodies.state[s + S_VX] += bodies.invMass[b] * i.x;
-    bodies.state[s + S_VY] += bodies.invMass[b] * i.y;
-    bodies.state[s + S_W] += bodies.invInertia[b] * ((p.x - bodies.cx[b]) * i.y - (p.y - bodies.cy[b]) * i.x);
+    if (bodies.kind[b] !== BodyKind.DYNAMIC) return;
+    const s = b * S.STRIDE;
+    bodies.state[s + S.VX] += bodies.invMass[b] * i.x;
+    bodies.state[s + S.VY] += bodies.invMass[b] * i.y;
+    bodies.state[s + S.W] += bodies.invInertia[b] * ((p.x - bodies.cx[b]) * i.y - (p.y - bodies.cy[b]) * i.x);
     core.wake(b);
   }
 
@@ -351,8 +340,8 @@ export class Body {
     const b = this.unlocked();
     const i = checkFinite('impulse', impulse);
     const core = this.world.core;
-    if (core.bodies.kind[b] !== DYNAMIC) return;
-    core.bodies.state[b * STATE_STRIDE + S_W] += core.bodies.invInertia[b] * i;
+    if (core.bodies.kind[b] !== BodyKind.DYNAMIC) return;
+    core.bodies.state[b * S.STRIDE + S.W] += core.bodies.invInertia[b] * i;
     core.wake(b);
   }
 
@@ -399,11 +388,11 @@ export class Body {
     const b = this.check();
     const p = checkVec2('worldPoint', worldPoint);
     const bodies = this.world.core.bodies;
-    const s = b * STATE_STRIDE;
-    const w = bodies.state[s + S_W];
+    const s = b * S.STRIDE;
+    const w = bodies.state[s + S.W];
     return {
-      x: bodies.state[s + S_VX] - w * (p.y - bodies.cy[b]),
-      y: bodies.state[s + S_VY] + w * (p.x - bodies.cx[b]),
+      x: bodies.state[s + S.VX] - w * (p.y - bodies.cy[b]),
+      y: bodies.state[s + S.VY] + w * (p.x - bodies.cx[b]),
     };
   }
 

@@ -1,68 +1,76 @@
 import { growF64, growI32 } from '../core/grow';
 import type { BodyStore } from './body-store';
-import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from './body-store';
+import { S } from './body-store';
 import type { ContactStore } from './contact-store';
 import type { ShapeStore } from './shape-store';
 import type { Softness } from './softness';
 
 // Layout of one contact constraint in `ContactConstraints.data` (doubles). Kept small: the solver
-// streams it eight times a step, and a large pile's constraints do not fit in the cache.
-const C_NX = 0;
-const C_NY = 1;
-const C_FRICTION = 2;
-const C_MA = 3;
-const C_IA = 4;
-const C_MB = 5;
-const C_IB = 6;
-const C_COUNT = 7;
-/** 1 when the contact uses the anchored (ground) softness, 0 for the contact softness */
-const C_ANCHORED = 8;
-/** 1 when the two points are solved as a block: K below is well conditioned */
-const C_BLOCK = 9;
-/** 2x2 normal mass matrix K of two-point manifolds */
-const C_K11 = 10;
-const C_K12 = 11;
-const C_K22 = 12;
-const C_POINTS = 13;
-/** K's condition number above which the two points are solved one after the other */
-const MAX_CONDITION = 1000;
+// streams it eight times a step, and a large pile's constraints do not fit in the cache. Enums, not
+// consts, for the reason given in body-store.ts.
+enum C {
+  NX = 0,
+  NY = 1,
+  FRICTION = 2,
+  MA = 3,
+  IA = 4,
+  MB = 5,
+  IB = 6,
+  COUNT = 7,
+  /** 1 when the contact uses the anchored (ground) softness, 0 for the contact softness */
+  ANCHORED = 8,
+  /** 1 when the two points are solved as a block: K below is well conditioned */
+  BLOCK = 9,
+  /** 2x2 normal mass matrix K of two-point manifolds */
+  K11 = 10,
+  K12 = 11,
+  K22 = 12,
+  POINTS = 13,
+  STRIDE = POINTS + 2 * 12,
+}
 // Per point, relative to its base. With anchors rA, rB (from the centres of mass), normal n and
 // tangent t = (ny, -nx), the solver needs the anchors only through their cross products with n and t:
 // the relative normal velocity is (vB - vA) . n + wB (rB x n) - wA (rA x n), and an impulse P turns a
 // body by its inverse inertia times r x P.
-/** rA x n */
-const P_RNA = 0;
-/** rB x n */
-const P_RNB = 1;
-/** rA x t, which is -(rA . n) */
-const P_RTA = 2;
-/** rB x t */
-const P_RTB = 3;
-/**
- * The separation is tracked through the substeps between the contact point moved back onto each
- * shape's core (by the shape's radius and half the separation): these core points turn with the body,
- * and for a circle the core point is its centre, so a fast-spinning ball does not drag its contact
- * point around with it. A body's turn q = (c, s) since the step began moves its core point's offset
- * along n to c (r . n - back) + s (r x n) (back being the distance from the anchor back to the core
- * point); P_QA and P_QB hold the cosine terms' coefficients: for A back - rA . n (A's offset counts
- * negatively), for B rB . n + back.
- */
-const P_QA = 4;
-const P_QB = 5;
-/** separation at the start of the step minus the core points' offset along the normal */
-const P_ADJ_SEP = 6;
-const P_NMASS = 7;
-const P_TMASS = 8;
-const P_NIMP = 9;
-const P_TIMP = 10;
-const P_MAX_NIMP = 11;
-const P_STRIDE = 12;
-export const CONSTRAINT_STRIDE = C_POINTS + 2 * P_STRIDE;
+enum P {
+  /** rA x n */
+  RNA = 0,
+  /** rB x n */
+  RNB = 1,
+  /** rA x t, which is -(rA . n) */
+  RTA = 2,
+  /** rB x t */
+  RTB = 3,
+  /**
+   * The separation is tracked through the substeps between the contact point moved back onto each
+   * shape's core (by the shape's radius and half the separation): these core points turn with the body,
+   * and for a circle the core point is its centre, so a fast-spinning ball does not drag its contact
+   * point around with it. A body's turn q = (c, s) since the step began moves its core point's offset
+   * along n to c (r . n - back) + s (r x n) (back being the distance from the anchor back to the core
+   * point); QA and QB hold the cosine terms' coefficients: for A back - rA . n (A's offset counts
+   * negatively), for B rB . n + back.
+   */
+  QA = 4,
+  QB = 5,
+  /** separation at the start of the step minus the core points' offset along the normal */
+  ADJ_SEP = 6,
+  NMASS = 7,
+  TMASS = 8,
+  NIMP = 9,
+  TIMP = 10,
+  MAX_NIMP = 11,
+  /** C.STRIDE counts two of these */
+  STRIDE = 12,
+}
 // Layout of `ContactConstraints.restitution`: read only after the substeps.
-const R_RESTITUTION = 0;
-/** normal relative velocity of each point before the step (negative when approaching) */
-const R_REL_VEL = 1;
-const R_STRIDE = 3;
+enum R {
+  RESTITUTION = 0,
+  /** normal relative velocity of each point before the step (negative when approaching) */
+  REL_VEL = 1,
+  STRIDE = 3,
+}
+/** K's condition number above which the two points are solved one after the other */
+const MAX_CONDITION = 1000;
 
 /** Contact constraints of one step, packed one block per touching contact (no objects). */
 export class ContactConstraints {
@@ -74,13 +82,15 @@ export class ContactConstraints {
   ids = new Int32Array(0);
   /** bias rate, mass scale, impulse scale and compliance (impulse / mass scale) of the contact (0..3) and anchored (4..7) softness */
   readonly softness = new Float64Array(8);
+  /** the substep `softness` was set for (see setContactSoftness) */
+  softnessStep = Number.NaN;
 
   reserve(n: number): void {
     if (n <= this.capacity) return;
     let capacity = Math.max(64, this.capacity);
     while (capacity < n) capacity *= 2;
-    this.data = growF64(this.data, capacity * CONSTRAINT_STRIDE);
-    this.restitution = growF64(this.restitution, capacity * R_STRIDE);
+    this.data = growF64(this.data, capacity * C.STRIDE);
+    this.restitution = growF64(this.restitution, capacity * R.STRIDE);
     this.ids = growI32(this.ids, capacity * 3);
     this.capacity = capacity;
   }
@@ -93,6 +103,19 @@ function setSoftness(out: Float64Array, at: number, soft: Softness): void {
   out[at + 3] = soft.impulseScale / soft.massScale;
 }
 
+/**
+ * Sets the softness of the contacts (`contactSoft`) and of the contacts held like the ground
+ * (`anchoredSoft`, see prepareContacts) for the steps to come.
+ */
+export function setContactSoftness(
+  cc: ContactConstraints,
+  contactSoft: Softness,
+  anchoredSoft: Softness,
+): void {
+  setSoftness(cc.softness, 0, contactSoft);
+  setSoftness(cc.softness, 4, anchoredSoft);
+}
+
 /** mass ratio from which a contact between two moving bodies is as stiff as one with the ground */
 const HEAVY_RATIO = 4;
 
@@ -101,7 +124,7 @@ const HEAVY_RATIO = 4;
  * to the centres of mass at the start of the step and stay fixed through the substeps; the separation
  * is updated from the bodies' accumulated motion instead of recomputing the manifold. Contacts with a
  * body that contacts cannot move (no mass, no inertia), or between bodies of very different mass,
- * use `anchoredSoft`, the others `contactSoft`.
+ * use the anchored softness, the others the contact softness (see setContactSoftness).
  */
 export function prepareContacts(
   cc: ContactConstraints,
@@ -110,14 +133,10 @@ export function prepareContacts(
   contacts: ContactStore,
   bodies: BodyStore,
   shapes: ShapeStore,
-  contactSoft: Softness,
-  anchoredSoft: Softness,
 ): void {
   cc.reserve(count);
   // set before the loop, which must end the function (see listAwakeBodies in solver.ts)
   cc.count = count;
-  setSoftness(cc.softness, 0, contactSoft);
-  setSoftness(cc.softness, 4, anchoredSoft);
   const d = cc.data;
   const rd = cc.restitution;
   const pointX = contacts.pointX;
@@ -156,34 +175,34 @@ export function prepareContacts(
     const radiusA = radius[sA];
     const radiusB = radius[sB];
     const pointCount = contacts.pointCount[c];
-    const base = i * CONSTRAINT_STRIDE;
-    const rBase = i * R_STRIDE;
+    const base = i * C.STRIDE;
+    const rBase = i * R.STRIDE;
     cc.ids[i * 3] = a;
     cc.ids[i * 3 + 1] = b;
     cc.ids[i * 3 + 2] = c;
-    d[base + C_NX] = nx;
-    d[base + C_NY] = ny;
-    d[base + C_FRICTION] = Math.sqrt(friction[sA] * friction[sB]);
-    d[base + C_MA] = mA;
-    d[base + C_IA] = iA;
-    d[base + C_MB] = mB;
-    d[base + C_IB] = iB;
-    d[base + C_COUNT] = pointCount;
-    d[base + C_ANCHORED] = anchored ? 1 : 0;
-    rd[rBase + R_RESTITUTION] = Math.max(restitution[sA], restitution[sB]);
-    const sa = a * STATE_STRIDE;
-    const sb = b * STATE_STRIDE;
-    const vAx = state[sa + S_VX];
-    const vAy = state[sa + S_VY];
-    const wA = state[sa + S_W];
-    const vBx = state[sb + S_VX];
-    const vBy = state[sb + S_VY];
-    const wB = state[sb + S_W];
+    d[base + C.NX] = nx;
+    d[base + C.NY] = ny;
+    d[base + C.FRICTION] = Math.sqrt(friction[sA] * friction[sB]);
+    d[base + C.MA] = mA;
+    d[base + C.IA] = iA;
+    d[base + C.MB] = mB;
+    d[base + C.IB] = iB;
+    d[base + C.COUNT] = pointCount;
+    d[base + C.ANCHORED] = anchored ? 1 : 0;
+    rd[rBase + R.RESTITUTION] = Math.max(restitution[sA], restitution[sB]);
+    const sa = a * S.STRIDE;
+    const sb = b * S.STRIDE;
+    const vAx = state[sa + S.VX];
+    const vAy = state[sa + S.VY];
+    const wA = state[sa + S.W];
+    const vBx = state[sb + S.VX];
+    const vBy = state[sb + S.VY];
+    const wB = state[sb + S.W];
     const tx = ny;
     const ty = -nx;
     for (let j = 0; j < pointCount; j++) {
       const k = c * 2 + j;
-      const p = base + C_POINTS + j * P_STRIDE;
+      const p = base + C.POINTS + j * P.STRIDE;
       const rAx = pointX[k] - cAx;
       const rAy = pointY[k] - cAy;
       const rBx = pointX[k] - cBx;
@@ -192,45 +211,45 @@ export function prepareContacts(
       const rnB = rBx * ny - rBy * nx;
       const rtA = rAx * ty - rAy * tx;
       const rtB = rBx * ty - rBy * tx;
-      d[p + P_RNA] = rnA;
-      d[p + P_RNB] = rnB;
-      d[p + P_RTA] = rtA;
-      d[p + P_RTB] = rtB;
+      d[p + P.RNA] = rnA;
+      d[p + P.RNB] = rnB;
+      d[p + P.RTA] = rtA;
+      d[p + P.RTB] = rtB;
       // the surfaces are separation/2 either side of the point; the cores a radius further in
       const sep = separation[k];
       const backA = radiusA + 0.5 * sep;
       const backB = radiusB + 0.5 * sep;
-      d[p + P_QA] = backA + rtA;
-      d[p + P_QB] = backB - rtB;
-      d[p + P_ADJ_SEP] = sep - ((rBx - rAx) * nx + (rBy - rAy) * ny + backA + backB);
+      d[p + P.QA] = backA + rtA;
+      d[p + P.QB] = backB - rtB;
+      d[p + P.ADJ_SEP] = sep - ((rBx - rAx) * nx + (rBy - rAy) * ny + backA + backB);
       const kN = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-      d[p + P_NMASS] = kN > 0 ? 1 / kN : 0;
+      d[p + P.NMASS] = kN > 0 ? 1 / kN : 0;
       const kT = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
-      d[p + P_TMASS] = kT > 0 ? 1 / kT : 0;
-      d[p + P_NIMP] = normalImpulse[k];
-      d[p + P_TIMP] = tangentImpulse[k];
-      d[p + P_MAX_NIMP] = 0;
+      d[p + P.TMASS] = kT > 0 ? 1 / kT : 0;
+      d[p + P.NIMP] = normalImpulse[k];
+      d[p + P.TIMP] = tangentImpulse[k];
+      d[p + P.MAX_NIMP] = 0;
       const dvx = vBx - wB * rBy - vAx + wA * rAy;
       const dvy = vBy + wB * rBx - vAy - wA * rAx;
-      rd[rBase + R_REL_VEL + j] = dvx * nx + dvy * ny;
+      rd[rBase + R.REL_VEL + j] = dvx * nx + dvy * ny;
     }
-    d[base + C_BLOCK] = 0;
+    d[base + C.BLOCK] = 0;
     if (pointCount === 2) {
-      const p1 = base + C_POINTS;
-      const p2 = p1 + P_STRIDE;
-      const rn1A = d[p1 + P_RNA];
-      const rn1B = d[p1 + P_RNB];
-      const rn2A = d[p2 + P_RNA];
-      const rn2B = d[p2 + P_RNB];
+      const p1 = base + C.POINTS;
+      const p2 = p1 + P.STRIDE;
+      const rn1A = d[p1 + P.RNA];
+      const rn1B = d[p1 + P.RNB];
+      const rn2A = d[p2 + P.RNA];
+      const rn2B = d[p2 + P.RNB];
       const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
       const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
       const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
       const det = k11 * k22 - k12 * k12;
       if (k11 * k11 < MAX_CONDITION * det) {
-        d[base + C_K11] = k11;
-        d[base + C_K12] = k12;
-        d[base + C_K22] = k22;
-        d[base + C_BLOCK] = 1;
+        d[base + C.K11] = k11;
+        d[base + C.K12] = k12;
+        d[base + C.K22] = k22;
+        d[base + C.BLOCK] = 1;
       }
     }
   }
@@ -241,42 +260,42 @@ export function warmStartContacts(cc: ContactConstraints, state: Float64Array): 
   const d = cc.data;
   const ids = cc.ids;
   for (let i = 0, n = cc.count; i < n; i++) {
-    const base = i * CONSTRAINT_STRIDE;
-    const sa = ids[i * 3] * STATE_STRIDE;
-    const sb = ids[i * 3 + 1] * STATE_STRIDE;
-    const mA = d[base + C_MA];
-    const iA = d[base + C_IA];
-    const mB = d[base + C_MB];
-    const iB = d[base + C_IB];
-    const nx = d[base + C_NX];
-    const ny = d[base + C_NY];
-    let vAx = state[sa + S_VX];
-    let vAy = state[sa + S_VY];
-    let wA = state[sa + S_W];
-    let vBx = state[sb + S_VX];
-    let vBy = state[sb + S_VY];
-    let wB = state[sb + S_W];
-    const count = d[base + C_COUNT];
+    const base = i * C.STRIDE;
+    const sa = ids[i * 3] * S.STRIDE;
+    const sb = ids[i * 3 + 1] * S.STRIDE;
+    const mA = d[base + C.MA];
+    const iA = d[base + C.IA];
+    const mB = d[base + C.MB];
+    const iB = d[base + C.IB];
+    const nx = d[base + C.NX];
+    const ny = d[base + C.NY];
+    let vAx = state[sa + S.VX];
+    let vAy = state[sa + S.VY];
+    let wA = state[sa + S.W];
+    let vBx = state[sb + S.VX];
+    let vBy = state[sb + S.VY];
+    let wB = state[sb + S.W];
+    const count = d[base + C.COUNT];
     for (let j = 0; j < count; j++) {
-      const p = base + C_POINTS + j * P_STRIDE;
-      const ni = d[p + P_NIMP];
-      const ti = d[p + P_TIMP];
+      const p = base + C.POINTS + j * P.STRIDE;
+      const ni = d[p + P.NIMP];
+      const ti = d[p + P.TIMP];
       // P = ni * n + ti * t, with t = (ny, -nx)
       const Px = ni * nx + ti * ny;
       const Py = ni * ny - ti * nx;
-      wA -= iA * (ni * d[p + P_RNA] + ti * d[p + P_RTA]);
+      wA -= iA * (ni * d[p + P.RNA] + ti * d[p + P.RTA]);
       vAx -= mA * Px;
       vAy -= mA * Py;
-      wB += iB * (ni * d[p + P_RNB] + ti * d[p + P_RTB]);
+      wB += iB * (ni * d[p + P.RNB] + ti * d[p + P.RTB]);
       vBx += mB * Px;
       vBy += mB * Py;
     }
-    state[sa + S_VX] = vAx;
-    state[sa + S_VY] = vAy;
-    state[sa + S_W] = wA;
-    state[sb + S_VX] = vBx;
-    state[sb + S_VY] = vBy;
-    state[sb + S_W] = wB;
+    state[sa + S.VX] = vAx;
+    state[sa + S.VY] = vAy;
+    state[sa + S.W] = wA;
+    state[sb + S.VX] = vBx;
+    state[sb + S.VY] = vBy;
+    state[sb + S.W] = wB;
   }
 }
 
@@ -298,48 +317,48 @@ export function solveContacts(
   const ids = cc.ids;
   const soft = cc.softness;
   for (let i = 0, n = cc.count; i < n; i++) {
-    const base = i * CONSTRAINT_STRIDE;
-    const sa = ids[i * 3] * STATE_STRIDE;
-    const sb = ids[i * 3 + 1] * STATE_STRIDE;
-    const mA = d[base + C_MA];
-    const iA = d[base + C_IA];
-    const mB = d[base + C_MB];
-    const iB = d[base + C_IB];
-    const nx = d[base + C_NX];
-    const ny = d[base + C_NY];
-    const k = d[base + C_ANCHORED] === 1 ? 4 : 0;
+    const base = i * C.STRIDE;
+    const sa = ids[i * 3] * S.STRIDE;
+    const sb = ids[i * 3 + 1] * S.STRIDE;
+    const mA = d[base + C.MA];
+    const iA = d[base + C.IA];
+    const mB = d[base + C.MB];
+    const iB = d[base + C.IB];
+    const nx = d[base + C.NX];
+    const ny = d[base + C.NY];
+    const k = d[base + C.ANCHORED] === 1 ? 4 : 0;
     const biasRate = soft[k];
     const massScale = soft[k + 1];
     const impulseScale = soft[k + 2];
-    let vAx = state[sa + S_VX];
-    let vAy = state[sa + S_VY];
-    let wA = state[sa + S_W];
-    let vBx = state[sb + S_VX];
-    let vBy = state[sb + S_VY];
-    let wB = state[sb + S_W];
-    const dpx = state[sb + S_DPX] - state[sa + S_DPX];
-    const dpy = state[sb + S_DPY] - state[sa + S_DPY];
-    const qAc = state[sa + S_DQC];
-    const qAs = state[sa + S_DQS];
-    const qBc = state[sb + S_DQC];
-    const qBs = state[sb + S_DQS];
+    let vAx = state[sa + S.VX];
+    let vAy = state[sa + S.VY];
+    let wA = state[sa + S.W];
+    let vBx = state[sb + S.VX];
+    let vBy = state[sb + S.VY];
+    let wB = state[sb + S.W];
+    const dpx = state[sb + S.DPX] - state[sa + S.DPX];
+    const dpy = state[sb + S.DPY] - state[sa + S.DPY];
+    const qAc = state[sa + S.DQC];
+    const qAs = state[sa + S.DQS];
+    const qBc = state[sb + S.DQC];
+    const qBs = state[sb + S.DQS];
     // the anchors' relative motion along the normal, without the anchors: add (qB rB - qA rA) . n
     const dpn = dpx * nx + dpy * ny;
-    const count = d[base + C_COUNT];
+    const count = d[base + C.COUNT] | 0;
 
-    if (d[base + C_BLOCK] === 1) {
-      const p1 = base + C_POINTS;
-      const p2 = p1 + P_STRIDE;
-      const rn1A = d[p1 + P_RNA];
-      const rn1B = d[p1 + P_RNB];
-      const rn2A = d[p2 + P_RNA];
-      const rn2B = d[p2 + P_RNB];
-      // current separations from the motion accumulated since the step began (see P_QA)
-      const s1 = dpn + qBc * d[p1 + P_QB] + qBs * rn1B + qAc * d[p1 + P_QA] - qAs * rn1A + d[p1 + P_ADJ_SEP];
-      const s2 = dpn + qBc * d[p2 + P_QB] + qBs * rn2B + qAc * d[p2 + P_QA] - qAs * rn2A + d[p2 + P_ADJ_SEP];
-      const k11 = d[base + C_K11];
-      const k12 = d[base + C_K12];
-      const k22 = d[base + C_K22];
+    if (d[base + C.BLOCK] === 1) {
+      const p1 = base + C.POINTS;
+      const p2 = p1 + P.STRIDE;
+      const rn1A = d[p1 + P.RNA];
+      const rn1B = d[p1 + P.RNB];
+      const rn2A = d[p2 + P.RNA];
+      const rn2B = d[p2 + P.RNB];
+      // current separations from the motion accumulated since the step began (see P.QA)
+      const s1 = dpn + qBc * d[p1 + P.QB] + qBs * rn1B + qAc * d[p1 + P.QA] - qAs * rn1A + d[p1 + P.ADJ_SEP];
+      const s2 = dpn + qBc * d[p2 + P.QB] + qBs * rn2B + qAc * d[p2 + P.QA] - qAs * rn2A + d[p2 + P.ADJ_SEP];
+      const k11 = d[base + C.K11];
+      const k12 = d[base + C.K12];
+      const k22 = d[base + C.K22];
       // soft terms per point: speculative (s > 0) points may approach until they touch, not further;
       // pushing points follow the soft constraint with bias, or none in the relax pass
       let b1 = 0;
@@ -359,8 +378,8 @@ export function solveContacts(
       const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
       const vn1 = dvn + wB * rn1B - wA * rn1A;
       const vn2 = dvn + wB * rn2B - wA * rn2A;
-      const l1 = d[p1 + P_NIMP];
-      const l2 = d[p2 + P_NIMP];
+      const l1 = d[p1 + P.NIMP];
+      const l2 = d[p2 + P.NIMP];
       // Soft block solve: find new impulses x >= 0 with vn' + b + G x = 0 on pushing points, where
       // vn' = vn + K (x - l) and G = diag(is/ms * Kii) is each point's compliance. This is exactly the
       // fixed point of the one-point soft update, so the block and the one-point paths agree.
@@ -388,10 +407,10 @@ export function solveContacts(
       }
       const dl1 = x1 - l1;
       const dl2 = x2 - l2;
-      d[p1 + P_NIMP] = x1;
-      d[p2 + P_NIMP] = x2;
-      d[p1 + P_MAX_NIMP] = Math.max(d[p1 + P_MAX_NIMP], dl1);
-      d[p2 + P_MAX_NIMP] = Math.max(d[p2 + P_MAX_NIMP], dl2);
+      d[p1 + P.NIMP] = x1;
+      d[p2 + P.NIMP] = x2;
+      d[p1 + P.MAX_NIMP] = Math.max(d[p1 + P.MAX_NIMP], dl1);
+      d[p2 + P.MAX_NIMP] = Math.max(d[p2 + P.MAX_NIMP], dl2);
       const Px = (dl1 + dl2) * nx;
       const Py = (dl1 + dl2) * ny;
       vAx -= mA * Px;
@@ -401,11 +420,12 @@ export function solveContacts(
       vBy += mB * Py;
       wB += iB * (rn1B * dl1 + rn2B * dl2);
     } else {
-      for (let j = 0; j < count; j++) {
-        const p = base + C_POINTS + j * P_STRIDE;
-        const rnA = d[p + P_RNA];
-        const rnB = d[p + P_RNB];
-        const sep = dpn + qBc * d[p + P_QB] + qBs * rnB + qAc * d[p + P_QA] - qAs * rnA + d[p + P_ADJ_SEP];
+      // point by point; the second (if any) in the same code (a loop of one or two turns costs more)
+      let p = base + C.POINTS;
+      for (;;) {
+        const rnA = d[p + P.RNA];
+        const rnB = d[p + P.RNB];
+        const sep = dpn + qBc * d[p + P.QB] + qBs * rnB + qAc * d[p + P.QA] - qAs * rnA + d[p + P.ADJ_SEP];
         let bias = 0;
         let mScale = 1;
         let iScale = 0;
@@ -416,12 +436,12 @@ export function solveContacts(
           iScale = impulseScale;
         }
         const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * rnB - wA * rnA;
-        const old = d[p + P_NIMP];
-        let impulse = -d[p + P_NMASS] * mScale * (vn + bias) - iScale * old;
+        const old = d[p + P.NIMP];
+        let impulse = -d[p + P.NMASS] * mScale * (vn + bias) - iScale * old;
         const next = Math.max(old + impulse, 0);
         impulse = next - old;
-        d[p + P_NIMP] = next;
-        d[p + P_MAX_NIMP] = Math.max(d[p + P_MAX_NIMP], impulse);
+        d[p + P.NIMP] = next;
+        d[p + P.MAX_NIMP] = Math.max(d[p + P.MAX_NIMP], impulse);
         const Px = impulse * nx;
         const Py = impulse * ny;
         vAx -= mA * Px;
@@ -430,24 +450,44 @@ export function solveContacts(
         vBx += mB * Px;
         vBy += mB * Py;
         wB += iB * impulse * rnB;
+        if (count === 1 || p !== base + C.POINTS) break;
+        p += P.STRIDE;
       }
     }
 
-    const friction = d[base + C_FRICTION];
+    // friction, point by point (unrolled: a loop of one or two turns cost more than its arithmetic)
+    const friction = d[base + C.FRICTION];
     const tx = ny;
     const ty = -nx;
-    for (let j = 0; j < count; j++) {
-      const p = base + C_POINTS + j * P_STRIDE;
-      const rtA = d[p + P_RTA];
-      const rtB = d[p + P_RTB];
-      const vt = (vBx - vAx) * tx + (vBy - vAy) * ty + wB * rtB - wA * rtA;
-      const maxFriction = friction * d[p + P_NIMP];
-      const old = d[p + P_TIMP];
-      const next = Math.max(-maxFriction, Math.min(old - d[p + P_TMASS] * vt, maxFriction));
-      const impulse = next - old;
-      d[p + P_TIMP] = next;
-      const Px = impulse * tx;
-      const Py = impulse * ty;
+    let p = base + C.POINTS;
+    let rtA = d[p + P.RTA];
+    let rtB = d[p + P.RTB];
+    let vt = (vBx - vAx) * tx + (vBy - vAy) * ty + wB * rtB - wA * rtA;
+    let maxFriction = friction * d[p + P.NIMP];
+    let old = d[p + P.TIMP];
+    let next = Math.max(-maxFriction, Math.min(old - d[p + P.TMASS] * vt, maxFriction));
+    let impulse = next - old;
+    d[p + P.TIMP] = next;
+    let Px = impulse * tx;
+    let Py = impulse * ty;
+    vAx -= mA * Px;
+    vAy -= mA * Py;
+    wA -= iA * impulse * rtA;
+    vBx += mB * Px;
+    vBy += mB * Py;
+    wB += iB * impulse * rtB;
+    if (count === 2) {
+      p += P.STRIDE;
+      rtA = d[p + P.RTA];
+      rtB = d[p + P.RTB];
+      vt = (vBx - vAx) * tx + (vBy - vAy) * ty + wB * rtB - wA * rtA;
+      maxFriction = friction * d[p + P.NIMP];
+      old = d[p + P.TIMP];
+      next = Math.max(-maxFriction, Math.min(old - d[p + P.TMASS] * vt, maxFriction));
+      impulse = next - old;
+      d[p + P.TIMP] = next;
+      Px = impulse * tx;
+      Py = impulse * ty;
       vAx -= mA * Px;
       vAy -= mA * Py;
       wA -= iA * impulse * rtA;
@@ -455,12 +495,12 @@ export function solveContacts(
       vBy += mB * Py;
       wB += iB * impulse * rtB;
     }
-    state[sa + S_VX] = vAx;
-    state[sa + S_VY] = vAy;
-    state[sa + S_W] = wA;
-    state[sb + S_VX] = vBx;
-    state[sb + S_VY] = vBy;
-    state[sb + S_W] = wB;
+    state[sa + S.VX] = vAx;
+    state[sa + S.VY] = vAy;
+    state[sa + S.W] = wA;
+    state[sb + S.VX] = vBx;
+    state[sb + S.VY] = vBy;
+    state[sb + S.W] = wB;
   }
 }
 
@@ -472,38 +512,38 @@ export function applyRestitution(cc: ContactConstraints, state: Float64Array, th
   const d = cc.data;
   const ids = cc.ids;
   for (let i = 0, n = cc.count; i < n; i++) {
-    const base = i * CONSTRAINT_STRIDE;
-    const rBase = i * R_STRIDE;
-    const restitution = cc.restitution[rBase + R_RESTITUTION];
+    const base = i * C.STRIDE;
+    const rBase = i * R.STRIDE;
+    const restitution = cc.restitution[rBase + R.RESTITUTION];
     if (restitution === 0) continue;
-    const sa = ids[i * 3] * STATE_STRIDE;
-    const sb = ids[i * 3 + 1] * STATE_STRIDE;
-    const mA = d[base + C_MA];
-    const iA = d[base + C_IA];
-    const mB = d[base + C_MB];
-    const iB = d[base + C_IB];
-    const nx = d[base + C_NX];
-    const ny = d[base + C_NY];
-    let vAx = state[sa + S_VX];
-    let vAy = state[sa + S_VY];
-    let wA = state[sa + S_W];
-    let vBx = state[sb + S_VX];
-    let vBy = state[sb + S_VY];
-    let wB = state[sb + S_W];
-    const count = d[base + C_COUNT];
+    const sa = ids[i * 3] * S.STRIDE;
+    const sb = ids[i * 3 + 1] * S.STRIDE;
+    const mA = d[base + C.MA];
+    const iA = d[base + C.IA];
+    const mB = d[base + C.MB];
+    const iB = d[base + C.IB];
+    const nx = d[base + C.NX];
+    const ny = d[base + C.NY];
+    let vAx = state[sa + S.VX];
+    let vAy = state[sa + S.VY];
+    let wA = state[sa + S.W];
+    let vBx = state[sb + S.VX];
+    let vBy = state[sb + S.VY];
+    let wB = state[sb + S.W];
+    const count = d[base + C.COUNT];
     for (let j = 0; j < count; j++) {
-      const p = base + C_POINTS + j * P_STRIDE;
-      const relVel = cc.restitution[rBase + R_REL_VEL + j];
-      if (relVel > -threshold || d[p + P_MAX_NIMP] === 0) continue;
-      const rnA = d[p + P_RNA];
-      const rnB = d[p + P_RNB];
+      const p = base + C.POINTS + j * P.STRIDE;
+      const relVel = cc.restitution[rBase + R.REL_VEL + j];
+      if (relVel > -threshold || d[p + P.MAX_NIMP] === 0) continue;
+      const rnA = d[p + P.RNA];
+      const rnB = d[p + P.RNB];
       const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * rnB - wA * rnA;
-      const old = d[p + P_NIMP];
-      let impulse = -d[p + P_NMASS] * (vn + restitution * relVel);
+      const old = d[p + P.NIMP];
+      let impulse = -d[p + P.NMASS] * (vn + restitution * relVel);
       const next = Math.max(old + impulse, 0);
       impulse = next - old;
-      d[p + P_NIMP] = next;
-      d[p + P_MAX_NIMP] = Math.max(d[p + P_MAX_NIMP], impulse);
+      d[p + P.NIMP] = next;
+      d[p + P.MAX_NIMP] = Math.max(d[p + P.MAX_NIMP], impulse);
       const Px = impulse * nx;
       const Py = impulse * ny;
       vAx -= mA * Px;
@@ -513,12 +553,12 @@ export function applyRestitution(cc: ContactConstraints, state: Float64Array, th
       vBy += mB * Py;
       wB += iB * impulse * rnB;
     }
-    state[sa + S_VX] = vAx;
-    state[sa + S_VY] = vAy;
-    state[sa + S_W] = wA;
-    state[sb + S_VX] = vBx;
-    state[sb + S_VY] = vBy;
-    state[sb + S_W] = wB;
+    state[sa + S.VX] = vAx;
+    state[sa + S.VY] = vAy;
+    state[sa + S.W] = wA;
+    state[sb + S.VX] = vBx;
+    state[sb + S.VY] = vBy;
+    state[sb + S.W] = wB;
   }
 }
 
@@ -533,16 +573,16 @@ export function storeImpulses(
   const d = cc.data;
   const ids = cc.ids;
   for (let i = 0, n = cc.count; i < n; i++) {
-    const base = i * CONSTRAINT_STRIDE;
+    const base = i * C.STRIDE;
     const contact = ids[i * 3 + 2];
-    const count = d[base + C_COUNT];
+    const count = d[base + C.COUNT];
     for (let j = 0; j < count; j++) {
-      const p = base + C_POINTS + j * P_STRIDE;
+      const p = base + C.POINTS + j * P.STRIDE;
       const k = contact * 2 + j;
-      normalImpulse[k] = d[p + P_NIMP];
-      tangentImpulse[k] = d[p + P_TIMP];
-      maxNormalImpulse[k] = d[p + P_MAX_NIMP];
-      approachSpeed[k] = -cc.restitution[i * R_STRIDE + R_REL_VEL + j];
+      normalImpulse[k] = d[p + P.NIMP];
+      tangentImpulse[k] = d[p + P.TIMP];
+      maxNormalImpulse[k] = d[p + P.MAX_NIMP];
+      approachSpeed[k] = -cc.restitution[i * R.STRIDE + R.REL_VEL + j];
     }
   }
 }

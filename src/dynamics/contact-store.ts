@@ -1,10 +1,12 @@
 import { growF64, growI32, growU8 } from '../core/grow';
 import { SlotStore } from '../core/slot-store';
 
-export const CONTACT_TOUCHING = 1;
-export const CONTACT_SENSOR = 2;
-/** touching began or ended during this step's narrow phase (cleared each step) */
-export const CONTACT_STARTED = 4;
+export enum ContactFlag {
+  TOUCHING = 1,
+  SENSOR = 2,
+  /** touching began or ended during this step's narrow phase (cleared each step) */
+  STARTED = 4,
+}
 
 /**
  * Contacts between pairs of shapes whose fat AABBs overlap, with their manifold and the impulses

@@ -1,15 +1,15 @@
 import { IntList } from '../collision/int-list';
 import { packedBounds } from '../geometry/bounds';
 import { minExtent } from '../geometry/extent';
-import { PACK_STRIDE } from '../geometry/packed';
+import { Pack } from '../geometry/packed';
 import { makeProxy, makeShapeProxy, type ShapeProxy } from '../geometry/shape-proxy';
 import { getSweepTransform, makeSweep } from '../geometry/sweep';
 import { makeTOIOutput, type TOIInput, timeOfImpact } from '../geometry/toi';
-import { CAPSULE, CIRCLE, type Geometry, POLYGON } from '../geometry/types';
+import { type Geometry, ShapeKind } from '../geometry/types';
 import { makeBounds } from '../math/aabb';
 import { makeTransform } from '../math/vec2';
-import { FLAG_BULLET } from './body-store';
-import { SHAPE_SENSOR, shouldShapesCollide } from './shape-store';
+import { BodyFlag } from './body-store';
+import { ShapeFlag, shouldShapesCollide } from './shape-store';
 import type { WorldCore } from './world-core';
 
 const input: TOIInput = {
@@ -129,10 +129,10 @@ function sweepAgainst(
   const slop = core.settings.linearSlop;
   let minFraction = 1;
   for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-    if ((shapes.flags[s] & SHAPE_SENSOR) !== 0) continue;
+    if ((shapes.flags[s] & ShapeFlag.SENSOR) !== 0) continue;
     const g = shapes.geometry[s]!;
     // swept box: the shape's box at the start of the step united with its box now
-    packedBounds(shapes.packed, s * PACK_STRIDE, start, bounds);
+    packedBounds(shapes.packed, s * Pack.STRIDE, start, bounds);
     const minX = Math.min(bounds.minX, shapes.minX[s]);
     const minY = Math.min(bounds.minY, shapes.minY[s]);
     const maxX = Math.max(bounds.maxX, shapes.maxX[s]);
@@ -144,9 +144,10 @@ function sweepAgainst(
     let discReady = false;
     for (let i = 0; i < candidates.length; i++) {
       const other = candidates.data[i];
-      if ((shapes.flags[other] & SHAPE_SENSOR) !== 0 || !shouldShapesCollide(shapes, s, other)) continue;
+      if ((shapes.flags[other] & ShapeFlag.SENSOR) !== 0 || !shouldShapesCollide(shapes, s, other)) continue;
       const ob = shapes.body[other];
-      if (ob === b || (bodies.flags[ob] & FLAG_BULLET) !== 0 || !core.jointsAllowCollision(b, ob)) continue;
+      if (ob === b || (bodies.flags[ob] & BodyFlag.BULLET) !== 0 || !core.jointsAllowCollision(b, ob))
+        continue;
       makeProxy(shapes.geometry[other]!, input.proxyA);
       const sa = input.sweepA;
       sa.localCenterX = 0;
@@ -194,13 +195,13 @@ function sweepAgainst(
 function loadDisc(g: Geometry, out: ShapeProxy): void {
   let x: number;
   let y: number;
-  if (g.kind === CIRCLE) {
+  if (g.kind === ShapeKind.CIRCLE) {
     x = g.center.x;
     y = g.center.y;
-  } else if (g.kind === CAPSULE) {
+  } else if (g.kind === ShapeKind.CAPSULE) {
     x = 0.5 * (g.center1.x + g.center2.x);
     y = 0.5 * (g.center1.y + g.center2.y);
-  } else if (g.kind === POLYGON) {
+  } else if (g.kind === ShapeKind.POLYGON) {
     x = g.centroid.x;
     y = g.centroid.y;
   } else {

@@ -1,7 +1,7 @@
 import { IntList } from '../collision/int-list';
 import { growF64 } from '../core/grow';
-import { CONTACT_SENSOR, type ContactStore } from './contact-store';
-import { SHAPE_CONTACT_EVENTS, SHAPE_SENSOR, SHAPE_SENSOR_EVENTS, type ShapeStore } from './shape-store';
+import { ContactFlag, type ContactStore } from './contact-store';
+import { ShapeFlag, type ShapeStore } from './shape-store';
 
 /**
  * Events of one step as plain numbers, recorded without allocation while the step runs and turned
@@ -31,9 +31,9 @@ export class EventBuffers {
   recordBegin(contacts: ContactStore, c: number, shapes: ShapeStore): void {
     const a = contacts.shapeA[c];
     const b = contacts.shapeB[c];
-    if ((contacts.flags[c] & CONTACT_SENSOR) !== 0) {
+    if ((contacts.flags[c] & ContactFlag.SENSOR) !== 0) {
       this.recordSensor(this.sensorBegin, shapes, a, b);
-    } else if (((shapes.flags[a] | shapes.flags[b]) & SHAPE_CONTACT_EVENTS) !== 0) {
+    } else if (((shapes.flags[a] | shapes.flags[b]) & ShapeFlag.CONTACT_EVENTS) !== 0) {
       this.contactBegin.push(c);
       this.contactBegin.push2(a, b);
     }
@@ -42,17 +42,17 @@ export class EventBuffers {
   recordEnd(contacts: ContactStore, c: number, shapes: ShapeStore): void {
     const a = contacts.shapeA[c];
     const b = contacts.shapeB[c];
-    if ((contacts.flags[c] & CONTACT_SENSOR) !== 0) {
+    if ((contacts.flags[c] & ContactFlag.SENSOR) !== 0) {
       this.recordSensor(this.sensorEnd, shapes, a, b);
-    } else if (((shapes.flags[a] | shapes.flags[b]) & SHAPE_CONTACT_EVENTS) !== 0) {
+    } else if (((shapes.flags[a] | shapes.flags[b]) & ShapeFlag.CONTACT_EVENTS) !== 0) {
       this.contactEnd.push2(a, b);
     }
   }
 
   private recordSensor(list: IntList, shapes: ShapeStore, a: number, b: number): void {
-    const sensor = (shapes.flags[a] & SHAPE_SENSOR) !== 0 ? a : b;
+    const sensor = (shapes.flags[a] & ShapeFlag.SENSOR) !== 0 ? a : b;
     const visitor = sensor === a ? b : a;
-    if ((shapes.flags[sensor] & shapes.flags[visitor] & SHAPE_SENSOR_EVENTS) !== 0)
+    if ((shapes.flags[sensor] & shapes.flags[visitor] & ShapeFlag.SENSOR_EVENTS) !== 0)
       list.push2(sensor, visitor);
   }
 

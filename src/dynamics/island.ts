@@ -1,16 +1,7 @@
 import { IntList } from '../collision/int-list';
 import { growF64, growI32 } from '../core/grow';
 import { TIME_TO_SLEEP } from '../core/settings';
-import {
-  type BodyStore,
-  FLAG_ALLOW_SLEEP,
-  FLAG_AWAKE,
-  S_VX,
-  S_VY,
-  S_W,
-  STATE_STRIDE,
-  STATIC,
-} from './body-store';
+import { BodyFlag, BodyKind, type BodyStore, S } from './body-store';
 
 /**
  * Sleep by islands. Each step the awake dynamic bodies are grouped (union-find) through touching
@@ -63,7 +54,7 @@ export class Islands {
     for (let i = 0; i < awakeCount; i++) {
       const b = awake[i];
       const r = this.find(b);
-      const t = (bodies.flags[b] & FLAG_ALLOW_SLEEP) !== 0 ? bodies.sleepTime[b] : 0;
+      const t = (bodies.flags[b] & BodyFlag.ALLOW_SLEEP) !== 0 ? bodies.sleepTime[b] : 0;
       if (t < minSleep[r]) minSleep[r] = t;
     }
     for (let i = 0; i < awakeCount; i++) {
@@ -89,23 +80,23 @@ export class Islands {
   }
 
   private sleepBody(bodies: BodyStore, b: number, island: number): void {
-    bodies.flags[b] &= ~FLAG_AWAKE;
+    bodies.flags[b] &= ~BodyFlag.AWAKE;
     bodies.sleepIsland[b] = island;
     bodies.islandNext[b] = this.islandHead[island];
     this.islandHead[island] = b;
-    const s = b * STATE_STRIDE;
-    bodies.state[s + S_VX] = 0;
-    bodies.state[s + S_VY] = 0;
-    bodies.state[s + S_W] = 0;
+    const s = b * S.STRIDE;
+    bodies.state[s + S.VX] = 0;
+    bodies.state[s + S.VY] = 0;
+    bodies.state[s + S.W] = 0;
     this.slept.push(b);
   }
 
   /** Wakes the body and, if it sleeps in an island, the whole island. */
   wake(bodies: BodyStore, b: number): void {
-    if (bodies.kind[b] === STATIC) return;
+    if (bodies.kind[b] === BodyKind.STATIC) return;
     const island = bodies.sleepIsland[b];
     if (island === -1) {
-      if ((bodies.flags[b] & FLAG_AWAKE) === 0) this.wakeBody(bodies, b);
+      if ((bodies.flags[b] & BodyFlag.AWAKE) === 0) this.wakeBody(bodies, b);
       else bodies.sleepTime[b] = 0;
       return;
     }
@@ -120,7 +111,7 @@ export class Islands {
   }
 
   private wakeBody(bodies: BodyStore, b: number): void {
-    bodies.flags[b] |= FLAG_AWAKE;
+    bodies.flags[b] |= BodyFlag.AWAKE;
     bodies.sleepTime[b] = 0;
     bodies.sleepIsland[b] = -1;
     bodies.islandNext[b] = -1;

@@ -7,11 +7,11 @@ import {
   setSeparatingAxisHint,
   VERTEX_PAIR_MIN_GAP,
 } from '../geometry/manifold-polygon';
-import { PACK_STRIDE } from '../geometry/packed';
+import { Pack } from '../geometry/packed';
 import type { Manifold, ManifoldPoint } from '../geometry/types';
-import { DYNAMIC, FLAG_AWAKE } from './body-store';
-import { CONTACT_SENSOR, CONTACT_TOUCHING } from './contact-store';
-import { SHAPE_SENSOR, shouldShapesCollide } from './shape-store';
+import { BodyFlag, BodyKind } from './body-store';
+import { ContactFlag } from './contact-store';
+import { ShapeFlag, shouldShapesCollide } from './shape-store';
 import type { WorldCore } from './world-core';
 
 /** A manifold point of its own class, so that its fields stay unboxed doubles (see ScratchPoint). */
@@ -38,8 +38,8 @@ export function createNewContacts(core: WorldCore): void {
     const bodyA = shapes.body[a];
     const bodyB = shapes.body[b];
     if (bodyA === bodyB) continue;
-    if (kind[bodyA] !== DYNAMIC && kind[bodyB] !== DYNAMIC) continue;
-    if ((shapes.flags[a] & shapes.flags[b] & SHAPE_SENSOR) !== 0) continue;
+    if (kind[bodyA] !== BodyKind.DYNAMIC && kind[bodyB] !== BodyKind.DYNAMIC) continue;
+    if ((shapes.flags[a] & shapes.flags[b] & ShapeFlag.SENSOR) !== 0) continue;
     if (!shouldShapesCollide(shapes, a, b)) continue;
     if (!core.jointsAllowCollision(bodyA, bodyB)) continue;
     core.createContact(a, b);
@@ -64,8 +64,8 @@ export function updateContacts(core: WorldCore): void {
     if (contacts.alive[c] === 0) continue;
     const bodyA = contacts.bodyA[c];
     const bodyB = contacts.bodyB[c];
-    const awakeA = (flagsB[bodyA] & FLAG_AWAKE) !== 0;
-    const awakeB = (flagsB[bodyB] & FLAG_AWAKE) !== 0;
+    const awakeA = (flagsB[bodyA] & BodyFlag.AWAKE) !== 0;
+    const awakeB = (flagsB[bodyB] & BodyFlag.AWAKE) !== 0;
     if (!awakeA && !awakeB) continue;
     const shapeA = contacts.shapeA[c];
     const shapeB = contacts.shapeB[c];
@@ -82,7 +82,7 @@ export function updateContacts(core: WorldCore): void {
       continue;
     }
     const flags = contacts.flags[c];
-    const sensor = (flags & CONTACT_SENSOR) !== 0;
+    const sensor = (flags & ContactFlag.SENSOR) !== 0;
     const k0 = c * 2;
     const reach = sensor ? 0 : speculative;
     if (gap > reach + VERTEX_PAIR_MIN_GAP) {
@@ -97,9 +97,9 @@ export function updateContacts(core: WorldCore): void {
         shapes.kind[shapeA],
         shapes.kind[shapeB],
         shapes.packed,
-        shapeA * PACK_STRIDE,
+        shapeA * Pack.STRIDE,
         core.fillTransform(bodyA, core.xfA),
-        shapeB * PACK_STRIDE,
+        shapeB * Pack.STRIDE,
         core.fillTransform(bodyB, core.xfB),
         manifold,
       );
@@ -151,17 +151,17 @@ export function updateContacts(core: WorldCore): void {
     }
     contacts.pointCount[c] = count;
     const touching = count > 0;
-    const wasTouching = (flags & CONTACT_TOUCHING) !== 0;
+    const wasTouching = (flags & ContactFlag.TOUCHING) !== 0;
     if (touching === wasTouching) continue;
     if (touching) {
-      contacts.flags[c] = flags | CONTACT_TOUCHING;
+      contacts.flags[c] = flags | ContactFlag.TOUCHING;
       events.recordBegin(contacts, c, shapes);
       if (!sensor) {
         if (!awakeA) core.wake(bodyA);
         if (!awakeB) core.wake(bodyB);
       }
     } else {
-      contacts.flags[c] = flags & ~CONTACT_TOUCHING;
+      contacts.flags[c] = flags & ~ContactFlag.TOUCHING;
       events.recordEnd(contacts, c, shapes);
     }
   }

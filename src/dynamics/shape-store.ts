@@ -1,12 +1,14 @@
 import { growF64, growI32, growU8, growU32 } from '../core/grow';
 import { SlotStore } from '../core/slot-store';
-import { PACK_STRIDE } from '../geometry/packed';
+import { Pack } from '../geometry/packed';
 import type { Geometry } from '../geometry/types';
 
-export const SHAPE_SENSOR = 1;
-export const SHAPE_CONTACT_EVENTS = 2;
-export const SHAPE_SENSOR_EVENTS = 4;
-export const SHAPE_HIT_EVENTS = 8;
+export enum ShapeFlag {
+  SENSOR = 1,
+  CONTACT_EVENTS = 2,
+  SENSOR_EVENTS = 4,
+  HIT_EVENTS = 8,
+}
 
 /** Shape data in columns indexed by shape slot; geometry objects are immutable and shared. */
 export class ShapeStore extends SlotStore {
@@ -30,7 +32,7 @@ export class ShapeStore extends SlotStore {
   maxX = new Float64Array(0);
   maxY = new Float64Array(0);
   geometry: (Geometry | undefined)[] = [];
-  /** each shape's geometry packed (see packed.ts), PACK_STRIDE doubles per slot */
+  /** each shape's geometry packed (see packed.ts), Pack.STRIDE doubles per slot */
   packed = new Float64Array(0);
 
   protected growColumns(capacity: number): void {
@@ -50,7 +52,7 @@ export class ShapeStore extends SlotStore {
     this.minY = growF64(this.minY, capacity);
     this.maxX = growF64(this.maxX, capacity);
     this.maxY = growF64(this.maxY, capacity);
-    this.packed = growF64(this.packed, capacity * PACK_STRIDE);
+    this.packed = growF64(this.packed, capacity * Pack.STRIDE);
   }
 
   protected resetSlot(slot: number): void {

@@ -11,7 +11,7 @@ import { type Geometry, makeRayHit } from '../geometry/types';
 import type { AABB } from '../math/aabb';
 import type { Vec2 } from '../math/vec2';
 import type { Body } from './body';
-import { SHAPE_CONTACT_EVENTS, SHAPE_HIT_EVENTS, SHAPE_SENSOR, SHAPE_SENSOR_EVENTS } from './shape-store';
+import { ShapeFlag } from './shape-store';
 
 export interface Filter {
   /** the categories this shape belongs to (bits) */
@@ -92,15 +92,15 @@ export function resolveShapeDef(def: ShapeDef | undefined): ResolvedShapeDef {
   if (typeof d !== 'object' || d === null) fail('def', def, 'an object');
   checkKnownKeys('def', d, SHAPE_DEF_KEYS);
   let flags = 0;
-  if (d.isSensor !== undefined && checkBoolean('isSensor', d.isSensor)) flags |= SHAPE_SENSOR;
+  if (d.isSensor !== undefined && checkBoolean('isSensor', d.isSensor)) flags |= ShapeFlag.SENSOR;
   if (d.enableContactEvents === undefined || checkBoolean('enableContactEvents', d.enableContactEvents)) {
-    flags |= SHAPE_CONTACT_EVENTS;
+    flags |= ShapeFlag.CONTACT_EVENTS;
   }
   if (d.enableSensorEvents === undefined || checkBoolean('enableSensorEvents', d.enableSensorEvents)) {
-    flags |= SHAPE_SENSOR_EVENTS;
+    flags |= ShapeFlag.SENSOR_EVENTS;
   }
   if (d.enableHitEvents !== undefined && checkBoolean('enableHitEvents', d.enableHitEvents)) {
-    flags |= SHAPE_HIT_EVENTS;
+    flags |= ShapeFlag.HIT_EVENTS;
   }
   return {
     density: d.density === undefined ? 1 : checkNonNegative('density', d.density),
@@ -213,28 +213,28 @@ export class ShapeHandle {
   }
 
   get isSensor(): boolean {
-    return (this.body.world.core.shapes.flags[this.check()] & SHAPE_SENSOR) !== 0;
+    return (this.body.world.core.shapes.flags[this.check()] & ShapeFlag.SENSOR) !== 0;
   }
 
   set isSensor(value: boolean) {
     const s = this.unlocked();
     checkBoolean('isSensor', value);
     const shapes = this.body.world.core.shapes;
-    if (value) shapes.flags[s] |= SHAPE_SENSOR;
-    else shapes.flags[s] &= ~SHAPE_SENSOR;
+    if (value) shapes.flags[s] |= ShapeFlag.SENSOR;
+    else shapes.flags[s] &= ~ShapeFlag.SENSOR;
     this.resetContacts(s);
   }
 
   get enableHitEvents(): boolean {
-    return (this.body.world.core.shapes.flags[this.check()] & SHAPE_HIT_EVENTS) !== 0;
+    return (this.body.world.core.shapes.flags[this.check()] & ShapeFlag.HIT_EVENTS) !== 0;
   }
 
   set enableHitEvents(value: boolean) {
     const s = this.unlocked();
     checkBoolean('enableHitEvents', value);
     const shapes = this.body.world.core.shapes;
-    if (value) shapes.flags[s] |= SHAPE_HIT_EVENTS;
-    else shapes.flags[s] &= ~SHAPE_HIT_EVENTS;
+    if (value) shapes.flags[s] |= ShapeFlag.HIT_EVENTS;
+    else shapes.flags[s] &= ~ShapeFlag.HIT_EVENTS;
   }
 
   private resetContacts(s: number): void {

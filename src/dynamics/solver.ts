@@ -7,33 +7,19 @@ import {
   MAX_ROTATION_PER_SUBSTEP,
 } from '../core/settings';
 import { clampVelocity, integratePositions, integrateVelocities } from './body-solver';
-import {
-  type BodyStore,
-  DYNAMIC,
-  FLAG_ALLOW_SLEEP,
-  FLAG_AWAKE,
-  FLAG_BULLET,
-  S_DPX,
-  S_DPY,
-  S_DQC,
-  S_DQS,
-  S_VX,
-  S_VY,
-  S_W,
-  STATE_STRIDE,
-  STATIC,
-} from './body-store';
+import { BodyFlag, BodyKind, type BodyStore, S } from './body-store';
 import {
   applyRestitution,
   prepareContacts as prepareContactConstraints,
+  setContactSoftness,
   solveContacts,
   storeImpulses,
   warmStartContacts,
 } from './contact-solver';
-import { CONTACT_SENSOR, CONTACT_TOUCHING, type ContactStore } from './contact-store';
+import { ContactFlag, type ContactStore } from './contact-store';
 import { deferBullet, solveBullets, solveContinuous } from './continuous';
 import type { GraphColoring } from './graph-color';
-import { SHAPE_HIT_EVENTS } from './shape-store';
+import { ShapeFlag } from './shape-store';
 import { makeSoftness, type Softness } from './softness';
 import type { WorldCore } from './world-core';
 
@@ -56,7 +42,11 @@ export function collectAwakeBodies(core: WorldCore): void {
 function listAwakeBodies(bodies: BodyStore, awake: Int32Array): number {
   let count = 0;
   for (let b = 0, n = bodies.slotCount; b < n; b++) {
-    if (bodies.alive[b] !== 0 && (bodies.flags[b] & FLAG_AWAKE) !== 0 && bodies.kind[b] !== STATIC) {
+    if (
+      bodies.alive[b] !== 0 &&
+      (bodies.flags[b] & BodyFlag.AWAKE) !== 0 &&
+      bodies.kind[b] !== BodyKind.STATIC
+    ) {
       awake[count++] = b;
     }
   }
@@ -79,19 +69,21 @@ function prepareJoints(core: WorldCore, h: number): void {
   ctx.qs = bodies.qs;
   ctx.lcx = bodies.lcx;
   ctx.lcy = bodies.lcy;
+  // the softness follows from the substep alone: worked out again only when it changes (a function
+  // called once a step may stay in the interpreter, which puts every double it makes on the heap)
+  if (ctx.h !== h) makeSoftness(JOINT_HERTZ, JOINT_DAMPING_RATIO, h, ctx.jointSoftness);
   ctx.h = h;
   ctx.invH = 1 / h;
   ctx.warmSpeedLimit = 2 * core.settings.maxLinearSpeed;
   ctx.warmTurnLimit = (2 * MAX_ROTATION_PER_SUBSTEP) / h;
-  makeSoftness(JOINT_HERTZ, JOINT_DAMPING_RATIO, h, ctx.jointSoftness);
   const active = core.activeJoints;
   // overwritten in place: `length = 0` would free the array's storage every step and the pushes grow
   // it anew (only a list that shrinks by half or more is trimmed)
   let count = 0;
   for (const joint of core.joints) {
     if (
-      (bodies.flags[joint.bodyA.slot] & FLAG_AWAKE) === 0 &&
-      (bodies.flags[joint.bodyB.slot] & FLAG_AWAKE) === 0
+      (bodies.flags[joint.bodyA.slot] & BodyFlag.AWAKE) === 0 &&
+      (bodies.flags[joint.bodyB.slot] & BodyFlag.AWAKE) === 0
     ) {
       continue;
     }
@@ -112,11 +104,15 @@ function prepareJoints(core: WorldCore, h: number): void {
 function addTouchingContacts(contacts: ContactStore, bodies: BodyStore, coloring: GraphColoring): void {
   for (let c = 0, n = contacts.slotCount; c < n; c++) {
     if (contacts.alive[c] === 0) continue;
-    if ((contacts.flags[c] & (CONTACT_TOUCHING | CONTACT_SENSOR)) !== CONTACT_TOUCHING) continue;
+    if ((contacts.flags[c] & (ContactFlag.TOUCHING | ContactFlag.SENSOR)) !== ContactFlag.TOUCHING) continue;
     const a = contacts.bodyA[c];
     const b = contacts.bodyB[c];
-    if ((bodies.flags[a] & FLAG_AWAKE) === 0 && (bodies.flags[b] & FLAG_AWAKE) === 0) continue;
-    coloring.add(c, bodies.kind[a] === DYNAMIC ? a : -1, bodies.kind[b] === DYNAMIC ? b : -1);
+    if ((bodies.flags[a] & BodyFlag.AWAKE) === 0 && (bodies.flags[b] & BodyFlag.AWAKE) === 0) continue;
+    coloring.add(
+      c,
+      bodies.kind[a] === BodyKind.DYNAMIC ? a : -1,
+      bodies.kind[b] === BodyKind.DYNAMIC ? b : -1,
+    );
   }
 }
 
@@ -125,25 +121,22 @@ function prepareContacts(core: WorldCore, h: number): void {
   const contacts = core.contacts;
   const bodies = core.bodies;
   const cc = core.constraints;
-  // a contact spring faster than an eighth of the substep rate makes large piles ring at few substeps
-  // (a base-20 pyramid at 2 substeps breathed +-60 mm at 3 Hz for good with a quarter)
-  const contactHertz = Math.min(CONTACT_HERTZ, 0.125 / h);
-  makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness);
-  makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness);
+  if (cc.softnessStep !== h) {
+    // a contact spring faster than an eighth of the substep rate makes large piles ring at few
+    // substeps (a base-20 pyramid at 2 substeps breathed +-60 mm at 3 Hz for good with a quarter)
+    const contactHertz = Math.min(CONTACT_HERTZ, 0.125 / h);
+    setContactSoftness(
+      cc,
+      makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness),
+      makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness),
+    );
+    cc.softnessStep = h;
+  }
   const coloring = core.coloring;
   coloring.begin(bodies.capacity, contacts.liveCount);
   addTouchingContacts(contacts, bodies, coloring);
   const total = coloring.finish();
-  prepareContactConstraints(
-    cc,
-    coloring.order,
-    total,
-    contacts,
-    bodies,
-    core.shapes,
-    contactSoftness,
-    staticSoftness,
-  );
+  prepareContactConstraints(cc, coloring.order, total, contacts, bodies, core.shapes);
 }
 
 /**
@@ -223,7 +216,7 @@ function reportHits(core: WorldCore): void {
     const c = cc.ids[i * 3 + 2];
     const a = contacts.shapeA[c];
     const b = contacts.shapeB[c];
-    if (((shapes.flags[a] | shapes.flags[b]) & SHAPE_HIT_EVENTS) === 0) continue;
+    if (((shapes.flags[a] | shapes.flags[b]) & ShapeFlag.HIT_EVENTS) === 0) continue;
     let best = -1;
     let speed = threshold;
     for (let j = 0; j < contacts.pointCount[c]; j++) {
@@ -260,7 +253,7 @@ function clampAwakeVelocities(
   const state = bodies.state;
   for (let i = 0; i < count; i++) {
     const b = awake[i];
-    if (bodies.kind[b] === DYNAMIC) clampVelocity(state, b * STATE_STRIDE, maxSpeed, maxW);
+    if (bodies.kind[b] === BodyKind.DYNAMIC) clampVelocity(state, b * S.STRIDE, maxSpeed, maxW);
   }
 }
 
@@ -287,9 +280,9 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
   );
   for (let i = 0, n = core.awakeCount; i < n; i++) {
     const b = awake[i];
-    const s = b * STATE_STRIDE;
-    const dqc = state[s + S_DQC];
-    const dqs = state[s + S_DQS];
+    const s = b * S.STRIDE;
+    const dqc = state[s + S.DQC];
+    const dqs = state[s + S.DQS];
     const q0c = bodies.qc[b];
     const q0s = bodies.qs[b];
     let qc = dqc * q0c - dqs * q0s;
@@ -297,8 +290,8 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     const inv = 1 / Math.sqrt(qc * qc + qs * qs);
     qc *= inv;
     qs *= inv;
-    const cx = bodies.cx[b] + state[s + S_DPX];
-    const cy = bodies.cy[b] + state[s + S_DPY];
+    const cx = bodies.cx[b] + state[s + S.DPX];
+    const cy = bodies.cy[b] + state[s + S.DPY];
     const lx = bodies.lcx[b];
     const ly = bodies.lcy[b];
     bodies.qc[b] = qc;
@@ -307,20 +300,20 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     bodies.cy[b] = cy;
     bodies.px[b] = cx - (qc * lx - qs * ly);
     bodies.py[b] = cy - (qs * lx + qc * ly);
-    const c0x = cx - state[s + S_DPX];
-    const c0y = cy - state[s + S_DPY];
-    state[s + S_DPX] = 0;
-    state[s + S_DPY] = 0;
-    state[s + S_DQC] = 1;
-    state[s + S_DQS] = 0;
+    const c0x = cx - state[s + S.DPX];
+    const c0y = cy - state[s + S.DPY];
+    state[s + S.DPX] = 0;
+    state[s + S.DPY] = 0;
+    state[s + S.DQC] = 1;
+    state[s + S.DQS] = 0;
     bodies.fx[b] = 0;
     bodies.fy[b] = 0;
     bodies.torque[b] = 0;
 
-    const vx = state[s + S_VX];
-    const vy = state[s + S_VY];
-    const w = state[s + S_W];
-    if (enableSleep && (bodies.flags[b] & FLAG_ALLOW_SLEEP) !== 0) {
+    const vx = state[s + S.VX];
+    const vy = state[s + S.VY];
+    const w = state[s + S.W];
+    if (enableSleep && (bodies.flags[b] & BodyFlag.ALLOW_SLEEP) !== 0) {
       const speed = Math.sqrt(vx * vx + vy * vy) + bodies.maxExtent[b] * Math.abs(w);
       bodies.sleepTime[b] = speed > sleepSpeed ? 0 : bodies.sleepTime[b] + dt;
     } else {
@@ -331,10 +324,10 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     // a body that moved more than half its thickness this step could have passed through a wall
     if (
       continuous &&
-      bodies.kind[b] === DYNAMIC &&
+      bodies.kind[b] === BodyKind.DYNAMIC &&
       (Math.sqrt(vx * vx + vy * vy) + bodies.maxExtent[b] * Math.abs(w)) * dt > 0.5 * bodies.minExtent[b]
     ) {
-      if ((bodies.flags[b] & FLAG_BULLET) !== 0) {
+      if ((bodies.flags[b] & BodyFlag.BULLET) !== 0) {
         // bullets also sweep against moving bodies, once those are final: see solveBullets
         deferBullet(b, c0x, c0y, q0c, q0s);
         continue;
@@ -358,12 +351,12 @@ export function updateSleep(core: WorldCore): void {
   for (let i = 0; i < cc.count; i++) {
     const a = cc.ids[i * 3];
     const b = cc.ids[i * 3 + 1];
-    if (kind[a] === DYNAMIC && kind[b] === DYNAMIC) islands.union(a, b);
+    if (kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) islands.union(a, b);
   }
   for (const joint of core.activeJoints) {
     const a = joint.bodyA.slot;
     const b = joint.bodyB.slot;
-    if (a !== b && kind[a] === DYNAMIC && kind[b] === DYNAMIC) islands.union(a, b);
+    if (a !== b && kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) islands.union(a, b);
   }
   islands.sleepIslands(bodies, core.awake, core.awakeCount);
 }

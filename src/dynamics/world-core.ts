@@ -1,18 +1,18 @@
-import { BroadPhase, DYNAMIC_PROXY, KINEMATIC_PROXY, STATIC_PROXY } from '../collision/broad-phase';
+import { BroadPhase, ProxyType } from '../collision/broad-phase';
 import { IntList } from '../collision/int-list';
 import { PairSet } from '../collision/pair-set';
 import { makeSettings, type Settings } from '../core/settings';
 import { packedBounds } from '../geometry/bounds';
 import { maxExtentFrom, minExtent } from '../geometry/extent';
 import { computeMass } from '../geometry/mass';
-import { PACK_STRIDE } from '../geometry/packed';
+import { Pack } from '../geometry/packed';
 import type { MassData } from '../geometry/types';
 import type { Bounds } from '../math/aabb';
 import { makeBounds } from '../math/aabb';
 import type { Transform } from '../math/vec2';
-import { BodyStore, DYNAMIC, FLAG_AWAKE, FLAG_FIXED_ROTATION, KINEMATIC, STATIC } from './body-store';
+import { BodyFlag, BodyKind, BodyStore } from './body-store';
 import { ContactConstraints } from './contact-solver';
-import { CONTACT_SENSOR, CONTACT_TOUCHING, ContactStore } from './contact-store';
+import { ContactFlag, ContactStore } from './contact-store';
 import { EventBuffers } from './event-buffers';
 import { GraphColoring } from './graph-color';
 import { Islands } from './island';
@@ -20,7 +20,7 @@ import { HingeBatch } from './joints/hinge-batch';
 import type { Joint } from './joints/joint';
 import type { JointContext } from './joints/joint-context';
 import { JointTree } from './joints/joint-tree';
-import { SHAPE_SENSOR, ShapeStore } from './shape-store';
+import { ShapeFlag, ShapeStore } from './shape-store';
 
 /**
  * Scratch transforms of the step, built from classes of their own: V8 keeps the fields of a class
@@ -124,7 +124,7 @@ export class WorldCore {
   refreshShapeBounds(shape: number): void {
     const shapes = this.shapes;
     const b = shapes.body[shape];
-    packedBounds(shapes.packed, shape * PACK_STRIDE, this.fillTransform(b, this.xfBounds), boundsScratch);
+    packedBounds(shapes.packed, shape * Pack.STRIDE, this.fillTransform(b, this.xfBounds), boundsScratch);
     shapes.minX[shape] = boundsScratch.minX;
     shapes.minY[shape] = boundsScratch.minY;
     shapes.maxX[shape] = boundsScratch.maxX;
@@ -134,7 +134,12 @@ export class WorldCore {
   createProxy(shape: number, forcePairCreation: boolean): void {
     const shapes = this.shapes;
     const kind = this.bodies.kind[shapes.body[shape]];
-    const type = kind === STATIC ? STATIC_PROXY : kind === KINEMATIC ? KINEMATIC_PROXY : DYNAMIC_PROXY;
+    const type =
+      kind === BodyKind.STATIC
+        ? ProxyType.STATIC
+        : kind === BodyKind.KINEMATIC
+          ? ProxyType.KINEMATIC
+          : ProxyType.DYNAMIC;
     this.refreshShapeBounds(shape);
     shapes.proxyKey[shape] = this.broadPhase.createProxy(
       shapes.minX[shape],
@@ -174,7 +179,7 @@ export class WorldCore {
     let mx = 0;
     let my = 0;
     let inertiaAtOrigin = 0;
-    if (kind === DYNAMIC) {
+    if (kind === BodyKind.DYNAMIC) {
       for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
         const density = shapes.density[s];
         if (density === 0) continue;
@@ -196,15 +201,15 @@ export class WorldCore {
       lcy = my / mass;
       inertia = inertiaAtOrigin - mass * (lcx * lcx + lcy * lcy);
     }
-    if (kind === DYNAMIC && mass === 0) {
+    if (kind === BodyKind.DYNAMIC && mass === 0) {
       // a dynamic body always has mass, so that forces and contacts act on it
       mass = 1;
     }
-    bodies.mass[b] = kind === DYNAMIC ? mass : 0;
-    bodies.invMass[b] = kind === DYNAMIC ? 1 / mass : 0;
-    const fixed = (bodies.flags[b] & FLAG_FIXED_ROTATION) !== 0;
-    bodies.inertia[b] = kind === DYNAMIC && !fixed ? inertia : 0;
-    bodies.invInertia[b] = kind === DYNAMIC && !fixed && inertia > 0 ? 1 / inertia : 0;
+    bodies.mass[b] = kind === BodyKind.DYNAMIC ? mass : 0;
+    bodies.invMass[b] = kind === BodyKind.DYNAMIC ? 1 / mass : 0;
+    const fixed = (bodies.flags[b] & BodyFlag.FIXED_ROTATION) !== 0;
+    bodies.inertia[b] = kind === BodyKind.DYNAMIC && !fixed ? inertia : 0;
+    bodies.invInertia[b] = kind === BodyKind.DYNAMIC && !fixed && inertia > 0 ? 1 / inertia : 0;
     bodies.lcx[b] = lcx;
     bodies.lcy[b] = lcy;
     bodies.updateCenter(b);
@@ -222,7 +227,7 @@ export class WorldCore {
   /** Wakes a body (and its sleeping island). Static bodies are never awake. */
   wake(b: number): void {
     const bodies = this.bodies;
-    if (bodies.kind[b] === STATIC) return;
+    if (bodies.kind[b] === BodyKind.STATIC) return;
     this.islands.wake(bodies, b);
   }
 
@@ -231,7 +236,7 @@ export class WorldCore {
     const contacts = this.contacts;
     for (let e = this.bodies.contactHead[b]; e !== -1; e = contacts.edgeNext[e]) {
       const c = e >> 1;
-      if ((contacts.flags[c] & CONTACT_TOUCHING) === 0) continue;
+      if ((contacts.flags[c] & ContactFlag.TOUCHING) === 0) continue;
       this.wake(contacts.bodyA[c] === b ? contacts.bodyB[c] : contacts.bodyA[c]);
     }
   }
@@ -247,8 +252,8 @@ export class WorldCore {
     contacts.shapeB[c] = shapeB;
     contacts.bodyA[c] = bodyA;
     contacts.bodyB[c] = bodyB;
-    if (((shapes.flags[shapeA] | shapes.flags[shapeB]) & SHAPE_SENSOR) !== 0)
-      contacts.flags[c] = CONTACT_SENSOR;
+    if (((shapes.flags[shapeA] | shapes.flags[shapeB]) & ShapeFlag.SENSOR) !== 0)
+      contacts.flags[c] = ContactFlag.SENSOR;
     bodies.contactHead[bodyA] = contacts.linkEdge(c, 0, bodies.contactHead[bodyA]);
     bodies.contactHead[bodyB] = contacts.linkEdge(c, 1, bodies.contactHead[bodyB]);
     this.pairs.set(shapeA, shapeB, c);
@@ -261,7 +266,7 @@ export class WorldCore {
     const bodies = this.bodies;
     const bodyA = contacts.bodyA[c];
     const bodyB = contacts.bodyB[c];
-    if (report && (contacts.flags[c] & CONTACT_TOUCHING) !== 0) {
+    if (report && (contacts.flags[c] & ContactFlag.TOUCHING) !== 0) {
       this.events.recordEnd(contacts, c, this.shapes);
     }
     bodies.contactHead[bodyA] = contacts.unlinkEdge(c, 0, bodies.contactHead[bodyA]);
@@ -317,6 +322,6 @@ export class WorldCore {
   }
 
   isAwake(b: number): boolean {
-    return (this.bodies.flags[b] & FLAG_AWAKE) !== 0;
+    return (this.bodies.flags[b] & BodyFlag.AWAKE) !== 0;
   }
 }

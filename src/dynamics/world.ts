@@ -10,28 +10,16 @@ import {
   fail,
 } from '../core/errors';
 import { readSnapshot, writeSnapshot } from '../debug/snapshot';
-import { PACK_STRIDE, packGeometry } from '../geometry/packed';
-import { type Geometry, isGeometry, SEGMENT } from '../geometry/types';
+import { Pack, packGeometry } from '../geometry/packed';
+import { type Geometry, isGeometry, ShapeKind } from '../geometry/types';
 import type { AABB } from '../math/aabb';
 import { makeRotInto } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
 import type { CastHit, QueryFilter, QueryTransform } from '../query/index';
 import * as queries from '../query/index';
 import { BODY_DEF_KEYS, BODY_TYPES, Body, type BodyDef, type BodyType } from './body';
-import {
-  DYNAMIC,
-  FLAG_ALLOW_SLEEP,
-  FLAG_AWAKE,
-  FLAG_BULLET,
-  FLAG_FIXED_ROTATION,
-  KINEMATIC,
-  S_VX,
-  S_VY,
-  S_W,
-  STATE_STRIDE,
-  STATIC,
-} from './body-store';
-import { CONTACT_TOUCHING } from './contact-store';
+import { BodyFlag, BodyKind, S } from './body-store';
+import { ContactFlag } from './contact-store';
 import { EventDispatcher, type WorldEventMap, type WorldEvents } from './events';
 import {
   buildJoint,
@@ -72,7 +60,11 @@ const WORLD_DEF_KEYS = [
   'enableContinuous',
   'lengthUnitsPerMeter',
 ] as const;
-const BODY_KINDS = { static: STATIC, kinematic: KINEMATIC, dynamic: DYNAMIC } as const;
+const BODY_KINDS = {
+  static: BodyKind.STATIC,
+  kinematic: BodyKind.KINEMATIC,
+  dynamic: BodyKind.DYNAMIC,
+} as const;
 const rotScratch = { c: 1, s: 0 };
 
 /** A physics world: bodies, their shapes, contacts and the step that moves them. */
@@ -158,7 +150,7 @@ export class World {
     const bodies = this.core.bodies;
     let n = 0;
     for (let b = 0; b < bodies.slotCount; b++) {
-      if (bodies.alive[b] !== 0 && (bodies.flags[b] & FLAG_AWAKE) !== 0) n++;
+      if (bodies.alive[b] !== 0 && (bodies.flags[b] & BodyFlag.AWAKE) !== 0) n++;
     }
     return n;
   }
@@ -212,27 +204,27 @@ export class World {
     const kind = BODY_KINDS[type];
     bodies.kind[b] = kind;
     let flags = 0;
-    if (kind !== STATIC && awake) flags |= FLAG_AWAKE;
-    if (fixedRotation) flags |= FLAG_FIXED_ROTATION;
-    if (bullet) flags |= FLAG_BULLET;
-    if (allowSleep) flags |= FLAG_ALLOW_SLEEP;
+    if (kind !== BodyKind.STATIC && awake) flags |= BodyFlag.AWAKE;
+    if (fixedRotation) flags |= BodyFlag.FIXED_ROTATION;
+    if (bullet) flags |= BodyFlag.BULLET;
+    if (allowSleep) flags |= BodyFlag.ALLOW_SLEEP;
     bodies.flags[b] = flags;
     makeRotInto(angle, rotScratch);
     bodies.px[b] = position.x;
     bodies.py[b] = position.y;
     bodies.qc[b] = rotScratch.c;
     bodies.qs[b] = rotScratch.s;
-    if (kind !== STATIC) {
-      const s = b * STATE_STRIDE;
-      bodies.state[s + S_VX] = v.x;
-      bodies.state[s + S_VY] = v.y;
-      bodies.state[s + S_W] = fixedRotation && kind === DYNAMIC ? 0 : w;
+    if (kind !== BodyKind.STATIC) {
+      const s = b * S.STRIDE;
+      bodies.state[s + S.VX] = v.x;
+      bodies.state[s + S.VY] = v.y;
+      bodies.state[s + S.W] = fixedRotation && kind === BodyKind.DYNAMIC ? 0 : w;
     }
     bodies.linearDamping[b] = linearDamping;
     bodies.angularDamping[b] = angularDamping;
     bodies.gravityScale[b] = gravityScale;
     core.updateMass(b);
-    if (kind !== STATIC && !awake) this.sleepBody(b);
+    if (kind !== BodyKind.STATIC && !awake) this.sleepBody(b);
     const handle = new Body(this, b, bodies.generation[b], def.userData);
     this.bodyHandles[b] = handle;
     return handle;
@@ -351,7 +343,7 @@ export class World {
     if (!isGeometry(geometry))
       fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment');
     const core = this.core;
-    if (geometry.kind === SEGMENT && core.bodies.kind[b] === DYNAMIC) {
+    if (geometry.kind === ShapeKind.SEGMENT && core.bodies.kind[b] === BodyKind.DYNAMIC) {
       throw new FulcrumError('geometry: a segment can only be attached to a static or kinematic body');
     }
     const d = resolveShapeDef(def);
@@ -359,13 +351,13 @@ export class World {
     const s = shapes.allocate();
     shapes.body[s] = b;
     shapes.geometry[s] = geometry;
-    packGeometry(geometry, shapes.packed, s * PACK_STRIDE);
+    packGeometry(geometry, shapes.packed, s * Pack.STRIDE);
     shapes.kind[s] = geometry.kind;
     shapes.flags[s] = d.flags;
     shapes.density[s] = d.density;
     shapes.friction[s] = d.friction;
     shapes.restitution[s] = d.restitution;
-    shapes.radius[s] = geometry.kind === SEGMENT ? 0 : geometry.radius;
+    shapes.radius[s] = geometry.kind === ShapeKind.SEGMENT ? 0 : geometry.radius;
     shapes.categoryBits[s] = d.filter.categoryBits;
     shapes.maskBits[s] = d.filter.maskBits;
     shapes.groupIndex[s] = d.filter.groupIndex;
@@ -410,9 +402,9 @@ export class World {
     const kind = BODY_KINDS[type];
     if (bodies.kind[b] === kind) return;
     const shapes = core.shapes;
-    if (kind === DYNAMIC) {
+    if (kind === BodyKind.DYNAMIC) {
       for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-        if (shapes.kind[s] === SEGMENT) {
+        if (shapes.kind[s] === ShapeKind.SEGMENT) {
           throw new FulcrumError(
             `type: a body with a segment shape cannot be 'dynamic', got ${JSON.stringify(type)}`,
           );
@@ -426,14 +418,14 @@ export class World {
       core.destroyProxy(s);
     }
     bodies.kind[b] = kind;
-    if (kind === STATIC) {
-      bodies.flags[b] &= ~FLAG_AWAKE;
-      const st = b * STATE_STRIDE;
-      bodies.state[st + S_VX] = 0;
-      bodies.state[st + S_VY] = 0;
-      bodies.state[st + S_W] = 0;
+    if (kind === BodyKind.STATIC) {
+      bodies.flags[b] &= ~BodyFlag.AWAKE;
+      const st = b * S.STRIDE;
+      bodies.state[st + S.VX] = 0;
+      bodies.state[st + S.VY] = 0;
+      bodies.state[st + S.W] = 0;
     } else {
-      bodies.flags[b] |= FLAG_AWAKE;
+      bodies.flags[b] |= BodyFlag.AWAKE;
       bodies.sleepTime[b] = 0;
     }
     core.updateMass(b);
@@ -444,7 +436,7 @@ export class World {
   sleepBody(b: number): void {
     const core = this.core;
     const bodies = core.bodies;
-    if (bodies.kind[b] === STATIC) return;
+    if (bodies.kind[b] === BodyKind.STATIC) return;
     core.wake(b); // leave any island it was in, so the new island is complete
     const contacts = core.contacts;
     const members: number[] = [b];
@@ -453,9 +445,9 @@ export class World {
       const x = members[i];
       for (let e = bodies.contactHead[x]; e !== -1; e = contacts.edgeNext[e]) {
         const c = e >> 1;
-        if ((contacts.flags[c] & CONTACT_TOUCHING) === 0) continue;
+        if ((contacts.flags[c] & ContactFlag.TOUCHING) === 0) continue;
         const other = contacts.bodyA[c] === x ? contacts.bodyB[c] : contacts.bodyA[c];
-        if (bodies.kind[other] !== DYNAMIC || seen.has(other)) continue;
+        if (bodies.kind[other] !== BodyKind.DYNAMIC || seen.has(other)) continue;
         seen.add(other);
         core.wake(other);
         members.push(other);

@@ -1,13 +1,6 @@
 import type { Bounds } from '../math/aabb';
 import type { Transform } from '../math/vec2';
-import {
-  PACK_COUNT,
-  PACK_RADIUS,
-  PACK_STRIDE,
-  PACK_VERTEX_STRIDE,
-  PACK_VERTICES,
-  packGeometry,
-} from './packed';
+import { Pack, packGeometry } from './packed';
 import type { Geometry } from './types';
 
 /**
@@ -24,8 +17,8 @@ export function packedBounds(data: Float64Array, base: number, xf: Transform, ou
   let minY = Number.POSITIVE_INFINITY;
   let maxX = Number.NEGATIVE_INFINITY;
   let maxY = Number.NEGATIVE_INFINITY;
-  const n = data[base + PACK_COUNT];
-  for (let i = 0, k = base + PACK_VERTICES; i < n; i++, k += PACK_VERTEX_STRIDE) {
+  const n = data[base + Pack.COUNT];
+  for (let i = 0, k = base + Pack.VERTICES; i < n; i++, k += Pack.VERTEX_STRIDE) {
     const vx = data[k];
     const vy = data[k + 1];
     const x = c * vx - s * vy;
@@ -35,14 +28,14 @@ export function packedBounds(data: Float64Array, base: number, xf: Transform, ou
     maxX = Math.max(maxX, x);
     maxY = Math.max(maxY, y);
   }
-  const r = data[base + PACK_RADIUS];
+  const r = data[base + Pack.RADIUS];
   out.minX = minX + px - r;
   out.minY = minY + py - r;
   out.maxX = maxX + px + r;
   out.maxY = maxY + py + r;
 }
 
-const scratch = new Float64Array(PACK_STRIDE);
+const scratch = new Float64Array(Pack.STRIDE);
 
 /** Tight world AABB of `g` placed at `xf`, including its radius. */
 export function computeShapeBounds(g: Geometry, xf: Transform, out: Bounds): Bounds {

@@ -1,7 +1,7 @@
 import type { Transform } from '../math/vec2';
 import { collideReach } from './collide-reach';
 import { LINEAR_SLOP } from './constants';
-import { PACK_RADIUS, PACK_VERTEX_STRIDE, PACK_VERTICES } from './packed';
+import { Pack } from './packed';
 import { closestBetweenSegments, makeSegmentClosest, segmentPair } from './segment-distance';
 import type { Manifold } from './types';
 
@@ -163,20 +163,20 @@ export function collideRoundedSegmentPair(
   xfB: Transform,
   out: Manifold,
 ): void {
-  const a = baseA + PACK_VERTICES;
-  const b = baseB + PACK_VERTICES;
+  const a = baseA + Pack.VERTICES;
+  const b = baseB + Pack.VERTICES;
   collideRoundedSegments(
     data[a],
     data[a + 1],
-    data[a + PACK_VERTEX_STRIDE],
-    data[a + PACK_VERTEX_STRIDE + 1],
-    data[baseA + PACK_RADIUS],
+    data[a + Pack.VERTEX_STRIDE],
+    data[a + Pack.VERTEX_STRIDE + 1],
+    data[baseA + Pack.RADIUS],
     xfA,
     data[b],
     data[b + 1],
-    data[b + PACK_VERTEX_STRIDE],
-    data[b + PACK_VERTEX_STRIDE + 1],
-    data[baseB + PACK_RADIUS],
+    data[b + Pack.VERTEX_STRIDE],
+    data[b + Pack.VERTEX_STRIDE + 1],
+    data[baseB + Pack.RADIUS],
     xfB,
     out,
   );

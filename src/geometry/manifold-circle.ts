@@ -1,6 +1,6 @@
 import type { Transform } from '../math/vec2';
 import { collideReach } from './collide-reach';
-import { PACK_COUNT, PACK_RADIUS, PACK_VERTEX_STRIDE, PACK_VERTICES } from './packed';
+import { Pack } from './packed';
 import type { Manifold } from './types';
 
 /**
@@ -44,12 +44,12 @@ export function collideCircles(
   out.pointCount = 0;
   const qa = xfA.q;
   const qb = xfB.q;
-  const cax = data[baseA + PACK_VERTICES];
-  const cay = data[baseA + PACK_VERTICES + 1];
-  const cbx = data[baseB + PACK_VERTICES];
-  const cby = data[baseB + PACK_VERTICES + 1];
-  const rA = data[baseA + PACK_RADIUS];
-  const rB = data[baseB + PACK_RADIUS];
+  const cax = data[baseA + Pack.VERTICES];
+  const cay = data[baseA + Pack.VERTICES + 1];
+  const cbx = data[baseB + Pack.VERTICES];
+  const cby = data[baseB + Pack.VERTICES + 1];
+  const rA = data[baseA + Pack.RADIUS];
+  const rB = data[baseB + Pack.RADIUS];
   const ax = qa.c * cax - qa.s * cay + xfA.p.x;
   const ay = qa.s * cax + qa.c * cay + xfA.p.y;
   const bx = qb.c * cbx - qb.s * cby + xfB.p.x;
@@ -86,15 +86,15 @@ export function collideCircleRoundedSegment(
 ): void {
   const speculativeDistance = collideReach[0];
   out.pointCount = 0;
-  const k = baseB + PACK_VERTICES;
+  const k = baseB + Pack.VERTICES;
   const q1x = data[k];
   const q1y = data[k + 1];
-  const q2x = data[k + PACK_VERTEX_STRIDE];
-  const q2y = data[k + PACK_VERTEX_STRIDE + 1];
-  const rB = data[baseB + PACK_RADIUS];
-  const rA = data[baseA + PACK_RADIUS];
-  const centerX = data[baseA + PACK_VERTICES];
-  const centerY = data[baseA + PACK_VERTICES + 1];
+  const q2x = data[k + Pack.VERTEX_STRIDE];
+  const q2y = data[k + Pack.VERTEX_STRIDE + 1];
+  const rB = data[baseB + Pack.RADIUS];
+  const rA = data[baseA + Pack.RADIUS];
+  const centerX = data[baseA + Pack.VERTICES];
+  const centerY = data[baseA + Pack.VERTICES + 1];
   // circle centre in B's frame
   const qa = xfA.q;
   const qb = xfB.q;
@@ -145,19 +145,19 @@ export function collideCirclePolygon(
   out.pointCount = 0;
   const qa = xfA.q;
   const qb = xfB.q;
-  const ax = data[baseA + PACK_VERTICES];
-  const ay = data[baseA + PACK_VERTICES + 1];
-  const rA = data[baseA + PACK_RADIUS];
+  const ax = data[baseA + Pack.VERTICES];
+  const ay = data[baseA + Pack.VERTICES + 1];
+  const rA = data[baseA + Pack.RADIUS];
   const wx = qa.c * ax - qa.s * ay + xfA.p.x - xfB.p.x;
   const wy = qa.s * ax + qa.c * ay + xfA.p.y - xfB.p.y;
   const cx = qb.c * wx + qb.s * wy;
   const cy = -qb.s * wx + qb.c * wy;
-  const n = data[baseB + PACK_COUNT];
-  const rB = data[baseB + PACK_RADIUS];
+  const n = data[baseB + Pack.COUNT];
+  const rB = data[baseB + Pack.RADIUS];
   const radius = rA + rB;
   let edge = 0;
   let maxSeparation = Number.NEGATIVE_INFINITY;
-  for (let i = 0, k = baseB + PACK_VERTICES; i < n; i++, k += PACK_VERTEX_STRIDE) {
+  for (let i = 0, k = baseB + Pack.VERTICES; i < n; i++, k += Pack.VERTEX_STRIDE) {
     const s = data[k + 2] * (cx - data[k]) + data[k + 3] * (cy - data[k + 1]);
     if (s > maxSeparation) {
       maxSeparation = s;
@@ -165,8 +165,8 @@ export function collideCirclePolygon(
     }
   }
   if (maxSeparation - radius >= speculativeDistance) return;
-  const k1 = baseB + PACK_VERTICES + PACK_VERTEX_STRIDE * edge;
-  const k2 = baseB + PACK_VERTICES + PACK_VERTEX_STRIDE * (edge + 1 === n ? 0 : edge + 1);
+  const k1 = baseB + Pack.VERTICES + Pack.VERTEX_STRIDE * edge;
+  const k2 = baseB + Pack.VERTICES + Pack.VERTEX_STRIDE * (edge + 1 === n ? 0 : edge + 1);
   const v1x = data[k1];
   const v1y = data[k1 + 1];
   const v2x = data[k2];

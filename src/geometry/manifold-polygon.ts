@@ -1,17 +1,7 @@
 import type { Transform } from '../math/vec2';
 import { collideReach } from './collide-reach';
 import { LINEAR_SLOP, REFERENCE_FACE_TOLERANCE } from './constants';
-import {
-  PACK_COUNT,
-  PACK_RADIUS,
-  PACK_RECTANGLE,
-  PACK_VERTEX_STRIDE,
-  PACK_VERTICES,
-  RECT_CX,
-  RECT_CY,
-  RECT_H0,
-  RECT_H1,
-} from './packed';
+import { Pack } from './packed';
 import { closestBetweenSegments, makeSegmentClosest, segmentPair } from './segment-distance';
 import { MAX_POLYGON_VERTICES, type Manifold } from './types';
 
@@ -158,10 +148,10 @@ function loadPolygonA(data: Float64Array, base: number): void {
   const y = polyA.y;
   const nx = polyA.nx;
   const ny = polyA.ny;
-  const n = data[base + PACK_COUNT];
+  const n = data[base + Pack.COUNT];
   polyA.count = n;
-  polyA.radius = data[base + PACK_RADIUS];
-  for (let i = 0, k = base + PACK_VERTICES; i < n; i++, k += PACK_VERTEX_STRIDE) {
+  polyA.radius = data[base + Pack.RADIUS];
+  for (let i = 0, k = base + Pack.VERTICES; i < n; i++, k += Pack.VERTEX_STRIDE) {
     x[i] = data[k];
     y[i] = data[k + 1];
     nx[i] = data[k + 2];
@@ -179,10 +169,10 @@ function loadPolygonB(data: Float64Array, base: number): void {
   const y = polyB.y;
   const nx = polyB.nx;
   const ny = polyB.ny;
-  const n = data[base + PACK_COUNT];
+  const n = data[base + Pack.COUNT];
   polyB.count = n;
-  polyB.radius = data[base + PACK_RADIUS];
-  for (let i = 0, k = base + PACK_VERTICES; i < n; i++, k += PACK_VERTEX_STRIDE) {
+  polyB.radius = data[base + Pack.RADIUS];
+  for (let i = 0, k = base + Pack.VERTICES; i < n; i++, k += Pack.VERTEX_STRIDE) {
     const vx = data[k];
     const vy = data[k + 1];
     const mx = data[k + 2];
@@ -478,32 +468,32 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   const rs = relative[1];
   const rx = relative[2];
   const ry = relative[3];
-  const radiusA = data[baseA + PACK_RADIUS];
-  const radiusB = data[baseB + PACK_RADIUS];
+  const radiusA = data[baseA + Pack.RADIUS];
+  const radiusB = data[baseB + Pack.RADIUS];
   const limit = speculativeDistance + radiusA + radiusB;
-  const vA = baseA + PACK_VERTICES;
-  const vB = baseB + PACK_VERTICES;
+  const vA = baseA + Pack.VERTICES;
+  const vB = baseB + Pack.VERTICES;
   // normals 0 and 1 of each (2 and 3 are their exact opposites), B's turned into A's frame
   const n0x = data[vA + 2];
   const n0y = data[vA + 3];
-  const n1x = data[vA + PACK_VERTEX_STRIDE + 2];
-  const n1y = data[vA + PACK_VERTEX_STRIDE + 3];
+  const n1x = data[vA + Pack.VERTEX_STRIDE + 2];
+  const n1y = data[vA + Pack.VERTEX_STRIDE + 3];
   const p0x = data[vB + 2];
   const p0y = data[vB + 3];
-  const p1x = data[vB + PACK_VERTEX_STRIDE + 2];
-  const p1y = data[vB + PACK_VERTEX_STRIDE + 3];
+  const p1x = data[vB + Pack.VERTEX_STRIDE + 2];
+  const p1y = data[vB + Pack.VERTEX_STRIDE + 3];
   const m0x = rc * p0x - rs * p0y;
   const m0y = rs * p0x + rc * p0y;
   const m1x = rc * p1x - rs * p1y;
   const m1y = rs * p1x + rc * p1y;
-  const bx = data[baseB + RECT_CX];
-  const by = data[baseB + RECT_CY];
-  const dx = rc * bx - rs * by + rx - data[baseA + RECT_CX];
-  const dy = rs * bx + rc * by + ry - data[baseA + RECT_CY];
-  const hA0 = data[baseA + RECT_H0];
-  const hA1 = data[baseA + RECT_H1];
-  const hB0 = data[baseB + RECT_H0];
-  const hB1 = data[baseB + RECT_H1];
+  const bx = data[baseB + Pack.RECT_CX];
+  const by = data[baseB + Pack.RECT_CY];
+  const dx = rc * bx - rs * by + rx - data[baseA + Pack.RECT_CX];
+  const dy = rs * bx + rc * by + ry - data[baseA + Pack.RECT_CY];
+  const hA0 = data[baseA + Pack.RECT_H0];
+  const hA1 = data[baseA + Pack.RECT_H1];
+  const hB0 = data[baseB + Pack.RECT_H0];
+  const hB1 = data[baseB + Pack.RECT_H1];
   const c00 = Math.abs(n0x * m0x + n0y * m0y);
   const c01 = Math.abs(n0x * m1x + n0y * m1y);
   const c10 = Math.abs(n1x * m0x + n1y * m0y);
@@ -535,8 +525,8 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   referenceFlip = flip;
   const refEdge = flip ? edgeB : edgeA;
   const ref2 = (refEdge + 1) & 3;
-  const r1 = (flip ? vB : vA) + refEdge * PACK_VERTEX_STRIDE;
-  const r2 = (flip ? vB : vA) + ref2 * PACK_VERTEX_STRIDE;
+  const r1 = (flip ? vB : vA) + refEdge * Pack.VERTEX_STRIDE;
+  const r2 = (flip ? vB : vA) + ref2 * Pack.VERTEX_STRIDE;
   let v1x = data[r1];
   let v1y = data[r1 + 1];
   let v2x = data[r2];
@@ -581,8 +571,8 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   }
   if (-dot1 < minDot) inc1 = 3;
   const inc2 = (inc1 + 1) & 3;
-  const w1 = (flip ? vA : vB) + inc1 * PACK_VERTEX_STRIDE;
-  const w2 = (flip ? vA : vB) + inc2 * PACK_VERTEX_STRIDE;
+  const w1 = (flip ? vA : vB) + inc1 * Pack.VERTEX_STRIDE;
+  const w2 = (flip ? vA : vB) + inc2 * Pack.VERTEX_STRIDE;
   let w1x = data[w1];
   let w1y = data[w1 + 1];
   let w2x = data[w2];
@@ -627,8 +617,8 @@ function writeManifold(
 ): void {
   out.pointCount = count;
   if (count === 0) return;
-  const radiusA = data[baseA + PACK_RADIUS];
-  const radiusB = data[baseB + PACK_RADIUS];
+  const radiusA = data[baseA + Pack.RADIUS];
+  const radiusB = data[baseB + Pack.RADIUS];
   const c = xf.q.c;
   const s = xf.q.s;
   const px = xf.p.x;
@@ -674,7 +664,7 @@ export function collidePackedPolygons(
   const ay = xfA.p.y;
   setRelative(ac, as, ax, ay, xfB.q.c, xfB.q.s, xfB.p.x, xfB.p.y);
   let count: number;
-  if (data[baseA + PACK_RECTANGLE] === 1 && data[baseB + PACK_RECTANGLE] === 1) {
+  if (data[baseA + Pack.RECTANGLE] === 1 && data[baseB + Pack.RECTANGLE] === 1) {
     count = collideRectangles(data, baseA, baseB);
   } else {
     loadPolygonA(data, baseA);

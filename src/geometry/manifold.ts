@@ -3,7 +3,7 @@ import { collideReach } from './collide-reach';
 import { collideRoundedSegmentPair } from './manifold-capsule';
 import { collideCirclePolygon, collideCircleRoundedSegment, collideCircles } from './manifold-circle';
 import { clearCollideHints, collidePackedPolygons } from './manifold-polygon';
-import { PACK_STRIDE, packGeometry } from './packed';
+import { Pack, packGeometry } from './packed';
 import type { Geometry, Manifold } from './types';
 
 /*
@@ -40,7 +40,7 @@ function collideNothing(
   out.pointCount = 0;
 }
 
-/** Indexed by kindA * 4 + kindB (CIRCLE 0, CAPSULE 1, SEGMENT 2, POLYGON 3). */
+/** Indexed by kindA * 4 + kindB (ShapeKind: CIRCLE 0, CAPSULE 1, SEGMENT 2, POLYGON 3). */
 const PAIRS: readonly PairFunction[] = [
   collideCircles, // circle-circle
   collideCircleRoundedSegment, // circle-capsule
@@ -91,7 +91,7 @@ export function collidePacked(
   clearCollideHints();
 }
 
-const scratch = new Float64Array(2 * PACK_STRIDE);
+const scratch = new Float64Array(2 * Pack.STRIDE);
 
 /** collidePacked for geometry objects: packs them first. */
 export function collide(
@@ -103,7 +103,7 @@ export function collide(
   out: Manifold,
 ): void {
   packGeometry(a, scratch, 0);
-  packGeometry(b, scratch, PACK_STRIDE);
+  packGeometry(b, scratch, Pack.STRIDE);
   collideReach[0] = speculativeDistance;
-  collidePacked(a.kind, b.kind, scratch, 0, xfA, PACK_STRIDE, xfB, out);
+  collidePacked(a.kind, b.kind, scratch, 0, xfA, Pack.STRIDE, xfB, out);
 }

@@ -1,6 +1,6 @@
 import { checkNonNegative } from '../core/errors';
 import { arcTangent2 } from '../math/arc-tangent';
-import { CAPSULE, type Capsule, CIRCLE, type Geometry, type MassData, POLYGON, type Polygon } from './types';
+import { type Capsule, type Geometry, type MassData, type Polygon, ShapeKind } from './types';
 
 const PI = Math.PI;
 
@@ -11,7 +11,7 @@ const PI = Math.PI;
 export function computeMass(g: Geometry, density: number, out: MassData): MassData {
   checkNonNegative('density', density);
   switch (g.kind) {
-    case CIRCLE: {
+    case ShapeKind.CIRCLE: {
       const rr = g.radius * g.radius;
       out.mass = density * PI * rr;
       out.centerX = g.center.x;
@@ -19,9 +19,9 @@ export function computeMass(g: Geometry, density: number, out: MassData): MassDa
       out.inertia = 0.5 * out.mass * rr;
       return out;
     }
-    case CAPSULE:
+    case ShapeKind.CAPSULE:
       return capsuleMass(g, density, out);
-    case POLYGON:
+    case ShapeKind.POLYGON:
       return polygonMass(g, density, out);
     default:
       out.mass = 0;

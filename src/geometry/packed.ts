@@ -1,5 +1,5 @@
 import type { Vec2 } from '../math/vec2';
-import { CAPSULE, CIRCLE, type Geometry, MAX_POLYGON_VERTICES, POLYGON } from './types';
+import { type Geometry, ShapeKind } from './types';
 
 /*
  * Geometry packed into a flat record of doubles, for the narrow phase and bounds: the geometry objects
@@ -13,17 +13,20 @@ import { CAPSULE, CIRCLE, type Geometry, MAX_POLYGON_VERTICES, POLYGON } from '.
  * its vertices, its centre and its half extents along normals 0 and 1, so that the separating axis
  * test of two rectangles takes two axes each instead of every vertex against every edge.
  */
-export const PACK_COUNT = 0;
-export const PACK_RADIUS = 1;
-export const PACK_RECTANGLE = 2;
-export const PACK_VERTICES = 3;
-export const PACK_VERTEX_STRIDE = 4;
-export const PACK_STRIDE = PACK_VERTICES + PACK_VERTEX_STRIDE * MAX_POLYGON_VERTICES;
-/** A rectangle's centre and its half extents along its normals 0 and 1, from the record's base. */
-export const RECT_CX = PACK_VERTICES + 4 * PACK_VERTEX_STRIDE;
-export const RECT_CY = RECT_CX + 1;
-export const RECT_H0 = RECT_CX + 2;
-export const RECT_H1 = RECT_CX + 3;
+export enum Pack {
+  COUNT = 0,
+  RADIUS = 1,
+  RECTANGLE = 2,
+  VERTICES = 3,
+  VERTEX_STRIDE = 4,
+  /** VERTICES + VERTEX_STRIDE * MAX_POLYGON_VERTICES, as a number: an enum member must be a constant */
+  STRIDE = VERTICES + VERTEX_STRIDE * 8,
+  /** A rectangle's centre and its half extents along its normals 0 and 1, from the record's base. */
+  RECT_CX = VERTICES + 4 * VERTEX_STRIDE,
+  RECT_CY = RECT_CX + 1,
+  RECT_H0 = RECT_CX + 2,
+  RECT_H1 = RECT_CX + 3,
+}
 /**
  * How far a 4-gon's unit normals may be from exactly opposite and perpendicular for it to count as a
  * rectangle: a turned box's normals are off by rounding, and the rectangle routine's result then
@@ -40,7 +43,7 @@ function packVertex(
   nx: number,
   ny: number,
 ) {
-  const k = base + PACK_VERTICES + PACK_VERTEX_STRIDE * i;
+  const k = base + Pack.VERTICES + Pack.VERTEX_STRIDE * i;
   out[k] = x;
   out[k + 1] = y;
   out[k + 2] = nx;
@@ -59,18 +62,18 @@ function isRectangle(count: number, n: readonly Vec2[]): boolean {
   );
 }
 
-/** Writes the packed record of `g` to `out` at `base` (PACK_STRIDE doubles). */
+/** Writes the packed record of `g` to `out` at `base` (Pack.STRIDE doubles). */
 export function packGeometry(g: Geometry, out: Float64Array, base: number): void {
-  out[base + PACK_RECTANGLE] = 0;
-  if (g.kind === CIRCLE) {
-    out[base + PACK_COUNT] = 1;
-    out[base + PACK_RADIUS] = g.radius;
+  out[base + Pack.RECTANGLE] = 0;
+  if (g.kind === ShapeKind.CIRCLE) {
+    out[base + Pack.COUNT] = 1;
+    out[base + Pack.RADIUS] = g.radius;
     packVertex(out, base, 0, g.center.x, g.center.y, 0, 0);
     return;
   }
-  if (g.kind === POLYGON) {
-    out[base + PACK_COUNT] = g.count;
-    out[base + PACK_RADIUS] = g.radius;
+  if (g.kind === ShapeKind.POLYGON) {
+    out[base + Pack.COUNT] = g.count;
+    out[base + Pack.RADIUS] = g.radius;
     for (let i = 0; i < g.count; i++) {
       packVertex(out, base, i, g.vertices[i].x, g.vertices[i].y, g.normals[i].x, g.normals[i].y);
     }
@@ -79,21 +82,21 @@ export function packGeometry(g: Geometry, out: Float64Array, base: number): void
       const n = g.normals;
       const cx = 0.5 * (v[0].x + v[2].x);
       const cy = 0.5 * (v[0].y + v[2].y);
-      out[base + PACK_RECTANGLE] = 1;
-      out[base + RECT_CX] = cx;
-      out[base + RECT_CY] = cy;
-      out[base + RECT_H0] = n[0].x * (v[0].x - cx) + n[0].y * (v[0].y - cy);
-      out[base + RECT_H1] = n[1].x * (v[1].x - cx) + n[1].y * (v[1].y - cy);
+      out[base + Pack.RECTANGLE] = 1;
+      out[base + Pack.RECT_CX] = cx;
+      out[base + Pack.RECT_CY] = cy;
+      out[base + Pack.RECT_H0] = n[0].x * (v[0].x - cx) + n[0].y * (v[0].y - cy);
+      out[base + Pack.RECT_H1] = n[1].x * (v[1].x - cx) + n[1].y * (v[1].y - cy);
     }
     return;
   }
-  const p1 = g.kind === CAPSULE ? g.center1 : g.point1;
-  const p2 = g.kind === CAPSULE ? g.center2 : g.point2;
+  const p1 = g.kind === ShapeKind.CAPSULE ? g.center1 : g.point1;
+  const p2 = g.kind === ShapeKind.CAPSULE ? g.center2 : g.point2;
   const ex = p2.x - p1.x;
   const ey = p2.y - p1.y;
   const length = Math.sqrt(ex * ex + ey * ey);
-  out[base + PACK_COUNT] = 2;
-  out[base + PACK_RADIUS] = g.kind === CAPSULE ? g.radius : 0;
+  out[base + Pack.COUNT] = 2;
+  out[base + Pack.RADIUS] = g.kind === ShapeKind.CAPSULE ? g.radius : 0;
   packVertex(out, base, 0, p1.x, p1.y, ey / length, -ex / length);
   packVertex(out, base, 1, p2.x, p2.y, -ey / length, ex / length);
 }

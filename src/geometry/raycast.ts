@@ -1,5 +1,5 @@
 import type { Transform, Vec2 } from '../math/vec2';
-import { CAPSULE, CIRCLE, type Geometry, POLYGON, type Polygon, type RayHit } from './types';
+import { type Geometry, type Polygon, type RayHit, ShapeKind } from './types';
 
 /*
  * Ray rule, for every kind: the ray is origin + f * translation for f in [0, 1].
@@ -220,15 +220,15 @@ export function rayCastGeometry(
   const dx = c * translationX + s * translationY;
   const dy = -s * translationX + c * translationY;
   let found: boolean;
-  if (g.kind === CIRCLE) {
+  if (g.kind === ShapeKind.CIRCLE) {
     const mx = ox - g.center.x;
     const my = oy - g.center.y;
     found =
       mx * mx + my * my >= g.radius * g.radius &&
       castDisc(g.center.x, g.center.y, g.radius, ox, oy, dx, dy, 2);
-  } else if (g.kind === CAPSULE) {
+  } else if (g.kind === ShapeKind.CAPSULE) {
     found = castCapsule(g.center1, g.center2, g.radius, ox, oy, dx, dy);
-  } else if (g.kind === POLYGON) {
+  } else if (g.kind === ShapeKind.POLYGON) {
     found = g.radius > 0 ? castRoundedPolygon(g, ox, oy, dx, dy) : castSharpPolygon(g, ox, oy, dx, dy);
   } else {
     found = castSegment(g.point1, g.point2, ox, oy, dx, dy);
@@ -250,16 +250,16 @@ export function testPoint(g: Geometry, xf: Transform, x: number, y: number): boo
   const ry = y - xf.p.y;
   const px = c * rx + s * ry;
   const py = -s * rx + c * ry;
-  if (g.kind === CIRCLE) {
+  if (g.kind === ShapeKind.CIRCLE) {
     const dx = px - g.center.x;
     const dy = py - g.center.y;
     return dx * dx + dy * dy <= g.radius * g.radius;
   }
-  if (g.kind === CAPSULE) {
+  if (g.kind === ShapeKind.CAPSULE) {
     return (
       segmentDistanceSq(g.center1.x, g.center1.y, g.center2.x, g.center2.y, px, py) <= g.radius * g.radius
     );
   }
-  if (g.kind === POLYGON) return polygonDistanceSq(g, px, py) <= g.radius * g.radius;
+  if (g.kind === ShapeKind.POLYGON) return polygonDistanceSq(g, px, py) <= g.radius * g.radius;
   return false;
 }

@@ -1,4 +1,4 @@
-import { CAPSULE, CIRCLE, type Geometry, MAX_POLYGON_VERTICES, SEGMENT } from './types';
+import { type Geometry, MAX_POLYGON_VERTICES, ShapeKind } from './types';
 
 /**
  * A shape as GJK sees it: the convex hull of up to 8 core points (local frame of the body)
@@ -22,19 +22,19 @@ export function makeShapeProxy(): ShapeProxy {
 
 /** Fill `out` from a shape's geometry: circle 1 point, capsule and segment 2, polygon its vertices. */
 export function makeProxy(g: Geometry, out: ShapeProxy): ShapeProxy {
-  if (g.kind === CIRCLE) {
+  if (g.kind === ShapeKind.CIRCLE) {
     out.x[0] = g.center.x;
     out.y[0] = g.center.y;
     out.count = 1;
     out.radius = g.radius;
-  } else if (g.kind === CAPSULE) {
+  } else if (g.kind === ShapeKind.CAPSULE) {
     out.x[0] = g.center1.x;
     out.y[0] = g.center1.y;
     out.x[1] = g.center2.x;
     out.y[1] = g.center2.y;
     out.count = 2;
     out.radius = g.radius;
-  } else if (g.kind === SEGMENT) {
+  } else if (g.kind === ShapeKind.SEGMENT) {
     out.x[0] = g.point1.x;
     out.y[0] = g.point1.y;
     out.x[1] = g.point2.x;

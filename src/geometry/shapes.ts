@@ -3,16 +3,7 @@ import { makeRot } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
 import { LINEAR_SLOP } from './constants';
 import { computeHull } from './hull';
-import {
-  CAPSULE,
-  type Capsule,
-  CIRCLE,
-  type Circle,
-  POLYGON,
-  type Polygon,
-  SEGMENT,
-  type Segment,
-} from './types';
+import { type Capsule, type Circle, type Polygon, type Segment, ShapeKind } from './types';
 
 function frozenPoint(x: number, y: number): Vec2 {
   return Object.freeze({ x, y });
@@ -36,7 +27,7 @@ function makePolygon(vertices: readonly Vec2[], radius: number, centroid?: Vec2)
   }
   return Object.freeze({
     type: 'polygon',
-    kind: POLYGON,
+    kind: ShapeKind.POLYGON,
     count,
     vertices: Object.freeze(vertices.map((v) => frozenPoint(v.x, v.y))),
     normals: Object.freeze(normals),
@@ -76,7 +67,12 @@ function checkApart(p1: Vec2, p2: Vec2, value: unknown): void {
 export const Shape = {
   circle(radius: number, center?: Vec2): Circle {
     checkPositive('radius', radius);
-    return Object.freeze({ type: 'circle', kind: CIRCLE, center: optionalPoint('center', center), radius });
+    return Object.freeze({
+      type: 'circle',
+      kind: ShapeKind.CIRCLE,
+      center: optionalPoint('center', center),
+      radius,
+    });
   },
 
   /** A rectangle with half extents, centred on `center`, rotated by `angle` radians. */
@@ -111,7 +107,7 @@ export const Shape = {
     checkApart(a, b, p2);
     return Object.freeze({
       type: 'capsule',
-      kind: CAPSULE,
+      kind: ShapeKind.CAPSULE,
       center1: Object.freeze(a),
       center2: Object.freeze(b),
       radius,
@@ -125,7 +121,7 @@ export const Shape = {
     checkApart(a, b, p2);
     return Object.freeze({
       type: 'segment',
-      kind: SEGMENT,
+      kind: ShapeKind.SEGMENT,
       point1: Object.freeze(a),
       point2: Object.freeze(b),
     });

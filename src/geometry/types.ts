@@ -4,23 +4,24 @@ import type { Vec2 } from '../math/vec2';
 export const MAX_POLYGON_VERTICES = 8;
 
 /** Numeric shape kinds, used for dispatch inside the engine. The public API shows the string `type`. */
-export const CIRCLE = 0;
-export const CAPSULE = 1;
-export const SEGMENT = 2;
-export const POLYGON = 3;
-export type ShapeKind = typeof CIRCLE | typeof CAPSULE | typeof SEGMENT | typeof POLYGON;
+export enum ShapeKind {
+  CIRCLE = 0,
+  CAPSULE = 1,
+  SEGMENT = 2,
+  POLYGON = 3,
+}
 
 /** All geometry is in the body's local frame (metres), immutable once built by `Shape.*`. */
 export interface Circle {
   readonly type: 'circle';
-  readonly kind: typeof CIRCLE;
+  readonly kind: ShapeKind.CIRCLE;
   readonly center: Vec2;
   readonly radius: number;
 }
 
 export interface Capsule {
   readonly type: 'capsule';
-  readonly kind: typeof CAPSULE;
+  readonly kind: ShapeKind.CAPSULE;
   readonly center1: Vec2;
   readonly center2: Vec2;
   readonly radius: number;
@@ -29,7 +30,7 @@ export interface Capsule {
 /** A two-sided segment with no thickness; only on static or kinematic bodies. */
 export interface Segment {
   readonly type: 'segment';
-  readonly kind: typeof SEGMENT;
+  readonly kind: ShapeKind.SEGMENT;
   readonly point1: Vec2;
   readonly point2: Vec2;
 }
@@ -40,7 +41,7 @@ export interface Segment {
  */
 export interface Polygon {
   readonly type: 'polygon';
-  readonly kind: typeof POLYGON;
+  readonly kind: ShapeKind.POLYGON;
   readonly count: number;
   readonly vertices: readonly Vec2[];
   /** outward unit normal of edge i (from vertex i to vertex i+1) */
@@ -107,10 +108,10 @@ export function makeRayHit(): RayHit {
 }
 
 const KIND_OF_TYPE: Record<string, number> = {
-  circle: CIRCLE,
-  capsule: CAPSULE,
-  segment: SEGMENT,
-  polygon: POLYGON,
+  circle: ShapeKind.CIRCLE,
+  capsule: ShapeKind.CAPSULE,
+  segment: ShapeKind.SEGMENT,
+  polygon: ShapeKind.POLYGON,
 };
 
 function isFinitePoint(p: unknown): boolean {
@@ -137,11 +138,11 @@ export function isGeometry(value: unknown): value is Geometry {
   const g = value as Record<string, unknown>;
   if (typeof g.type !== 'string' || KIND_OF_TYPE[g.type] !== g.kind) return false;
   switch (g.kind) {
-    case CIRCLE:
+    case ShapeKind.CIRCLE:
       return isFinitePoint(g.center) && isLength(g.radius, Number.MIN_VALUE);
-    case CAPSULE:
+    case ShapeKind.CAPSULE:
       return isFinitePoint(g.center1) && isFinitePoint(g.center2) && isLength(g.radius, Number.MIN_VALUE);
-    case SEGMENT:
+    case ShapeKind.SEGMENT:
       return isFinitePoint(g.point1) && isFinitePoint(g.point2);
     default: {
       const count = g.count;

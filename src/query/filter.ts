@@ -1,5 +1,5 @@
 import { checkBoolean, checkKnownKeys, fail } from '../core/errors';
-import { SHAPE_SENSOR, type ShapeStore } from '../dynamics/shape-store';
+import { ShapeFlag, type ShapeStore } from '../dynamics/shape-store';
 
 /**
  * Which shapes a world query sees. A shape passes when
@@ -68,6 +68,6 @@ export function resolveQueryFilter(
 
 /** Whether shape slot `s` passes the filter. */
 export function passesQueryFilter(shapes: ShapeStore, s: number, filter: ResolvedQueryFilter): boolean {
-  if (!filter.includeSensors && (shapes.flags[s] & SHAPE_SENSOR) !== 0) return false;
+  if (!filter.includeSensors && (shapes.flags[s] & ShapeFlag.SENSOR) !== 0) return false;
   return (shapes.categoryBits[s] & filter.maskBits) !== 0 && (filter.categoryBits & shapes.maskBits[s]) !== 0;
 }

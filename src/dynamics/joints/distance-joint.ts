@@ -1,7 +1,7 @@
 import { checkBoolean, checkNonNegative, FulcrumError } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import { makeSoftness, type Softness } from '../softness';
 import type { World } from '../world';
 import { Joint } from './joint';
@@ -192,38 +192,38 @@ export class DistanceJoint extends Joint {
     const total = this.impulse + this.lowerImpulse - this.upperImpulse;
     const px = total * this.ux;
     const py = total * this.uy;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    state[sa + S_VX] -= this.mA * px;
-    state[sa + S_VY] -= this.mA * py;
-    state[sa + S_W] -= this.iA * (this.rAx * py - this.rAy * px);
-    state[sb + S_VX] += this.mB * px;
-    state[sb + S_VY] += this.mB * py;
-    state[sb + S_W] += this.iB * (this.rBx * py - this.rBy * px);
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
+    state[sa + S.VX] -= this.mA * px;
+    state[sa + S.VY] -= this.mA * py;
+    state[sa + S.W] -= this.iA * (this.rAx * py - this.rAy * px);
+    state[sb + S.VX] += this.mB * px;
+    state[sb + S.VY] += this.mB * py;
+    state[sb + S.W] += this.iB * (this.rBx * py - this.rBy * px);
   }
 
   /** Applies an impulse along the axis and returns nothing; reads and writes the velocities. */
   private apply(state: Float64Array, impulse: number): void {
     const px = impulse * this.ux;
     const py = impulse * this.uy;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    state[sa + S_VX] -= this.mA * px;
-    state[sa + S_VY] -= this.mA * py;
-    state[sa + S_W] -= this.iA * (this.rAx * py - this.rAy * px);
-    state[sb + S_VX] += this.mB * px;
-    state[sb + S_VY] += this.mB * py;
-    state[sb + S_W] += this.iB * (this.rBx * py - this.rBy * px);
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
+    state[sa + S.VX] -= this.mA * px;
+    state[sa + S.VY] -= this.mA * py;
+    state[sa + S.W] -= this.iA * (this.rAx * py - this.rAy * px);
+    state[sb + S.VX] += this.mB * px;
+    state[sb + S.VY] += this.mB * py;
+    state[sb + S.W] += this.iB * (this.rBx * py - this.rBy * px);
   }
 
   /** Relative velocity of the anchors along the axis. */
   private axialSpeed(state: Float64Array): number {
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    const wA = state[sa + S_W];
-    const wB = state[sb + S_W];
-    const dvx = state[sb + S_VX] - wB * this.rBy - state[sa + S_VX] + wA * this.rAy;
-    const dvy = state[sb + S_VY] + wB * this.rBx - state[sa + S_VY] - wA * this.rAx;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
+    const wA = state[sa + S.W];
+    const wB = state[sb + S.W];
+    const dvx = state[sb + S.VX] - wB * this.rBy - state[sa + S.VX] + wA * this.rAy;
+    const dvy = state[sb + S.VY] + wB * this.rBx - state[sa + S.VY] - wA * this.rAx;
     return dvx * this.ux + dvy * this.uy;
   }
 

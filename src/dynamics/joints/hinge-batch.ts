@@ -1,27 +1,29 @@
 import { growF64, growI32 } from '../../core/grow';
-import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import type { Softness } from '../softness';
 import type { Joint } from './joint';
 import type { JointContext } from './joint-context';
 
 // Layout of one hinge in `HingeBatch.data` (doubles); see Joint for the meaning of the fields.
-export const H_MA = 0;
-export const H_IA = 1;
-export const H_MB = 2;
-export const H_IB = 3;
-export const H_RAX0 = 4;
-export const H_RAY0 = 5;
-export const H_RBX0 = 6;
-export const H_RBY0 = 7;
-export const H_DCX = 8;
-export const H_DCY = 9;
-/** accumulated point impulse */
-export const H_LX = 10;
-export const H_LY = 11;
-export const HINGE_STRIDE = 12;
+export enum H {
+  MA = 0,
+  IA = 1,
+  MB = 2,
+  IB = 3,
+  RAX0 = 4,
+  RAY0 = 5,
+  RBX0 = 6,
+  RBY0 = 7,
+  DCX = 8,
+  DCY = 9,
+  /** accumulated point impulse */
+  LX = 10,
+  LY = 11,
+  STRIDE = 12,
+}
 
 /**
- * Writes a joint's step data (H_MA .. H_DCY) to `d` at `base`: its bodies' inverse masses, the
+ * Writes a joint's step data (H.MA .. H.DCY) to `d` at `base`: its bodies' inverse masses, the
  * anchors relative to the centres of mass, world-oriented, and the centres' offset. The local
  * anchors (on A, then on B) are read from `anchors` at `k`.
  */
@@ -34,24 +36,24 @@ export function writeStepData(
   d: Float64Array,
   base: number,
 ): void {
-  d[base + H_MA] = ctx.invMass[a];
-  d[base + H_IA] = ctx.invInertia[a];
-  d[base + H_MB] = ctx.invMass[b];
-  d[base + H_IB] = ctx.invInertia[b];
+  d[base + H.MA] = ctx.invMass[a];
+  d[base + H.IA] = ctx.invInertia[a];
+  d[base + H.MB] = ctx.invMass[b];
+  d[base + H.IB] = ctx.invInertia[b];
   let c = ctx.qc[a];
   let s = ctx.qs[a];
   let x = anchors[k] - ctx.lcx[a];
   let y = anchors[k + 1] - ctx.lcy[a];
-  d[base + H_RAX0] = c * x - s * y;
-  d[base + H_RAY0] = s * x + c * y;
+  d[base + H.RAX0] = c * x - s * y;
+  d[base + H.RAY0] = s * x + c * y;
   c = ctx.qc[b];
   s = ctx.qs[b];
   x = anchors[k + 2] - ctx.lcx[b];
   y = anchors[k + 3] - ctx.lcy[b];
-  d[base + H_RBX0] = c * x - s * y;
-  d[base + H_RBY0] = s * x + c * y;
-  d[base + H_DCX] = ctx.cx[b] - ctx.cx[a];
-  d[base + H_DCY] = ctx.cy[b] - ctx.cy[a];
+  d[base + H.RBX0] = c * x - s * y;
+  d[base + H.RBY0] = s * x + c * y;
+  d[base + H.DCX] = ctx.cx[b] - ctx.cx[a];
+  d[base + H.DCY] = ctx.cy[b] - ctx.cy[a];
 }
 
 /**
@@ -87,7 +89,7 @@ export class HingeBatch {
       const d = this.data;
       const ids = this.ids;
       for (let i = 0; i < this.count; i++) {
-        writeStepData(ctx, ids[2 * i], ids[2 * i + 1], this.anchors, 4 * i, d, i * HINGE_STRIDE);
+        writeStepData(ctx, ids[2 * i], ids[2 * i + 1], this.anchors, 4 * i, d, i * H.STRIDE);
       }
     }
     for (const joint of this.otherActive) joint.prepare(ctx);
@@ -103,21 +105,21 @@ export class HingeBatch {
     }
     for (const joint of iterative) if (!joint.isPlainHinge()) this.otherIterative.push(joint);
     const n = this.joints.length;
-    if (this.data.length < n * HINGE_STRIDE) {
+    if (this.data.length < n * H.STRIDE) {
       const capacity = Math.max(64, 2 * n);
-      this.data = growF64(this.data, capacity * HINGE_STRIDE);
+      this.data = growF64(this.data, capacity * H.STRIDE);
       this.ids = growI32(this.ids, capacity * 2);
       this.anchors = growF64(this.anchors, capacity * 4);
     }
     for (let i = 0; i < n; i++) {
-      this.joints[i].packHinge(ctx, this.data, i * HINGE_STRIDE, this.ids, 2 * i, this.anchors, 4 * i);
+      this.joints[i].packHinge(ctx, this.data, i * H.STRIDE, this.ids, 2 * i, this.anchors, 4 * i);
     }
     this.count = n;
   }
 
   /** Returns the accumulated impulses to the joints (warm start of the next step, reaction force). */
   store(ctx: JointContext): void {
-    for (let i = 0; i < this.count; i++) this.joints[i].unpackHinge(this.data, i * HINGE_STRIDE, ctx);
+    for (let i = 0; i < this.count; i++) this.joints[i].unpackHinge(this.data, i * H.STRIDE, ctx);
   }
 
   /**
@@ -125,33 +127,36 @@ export class HingeBatch {
    * past `speedLimit` or `turnLimit` leaves the velocities as they were and forgets its impulse.
    */
   warmStart(state: Float64Array, speedLimit: number, turnLimit: number): void {
+    // nothing to do, and in a world without hinges these calls never get hot: the interpreter would
+    // put the doubles read below on the heap at every call
+    if (this.count === 0) return;
     const d = this.data;
     const ids = this.ids;
     const v2 = speedLimit * speedLimit;
     for (let i = 0, n = this.count; i < n; i++) {
-      const base = i * HINGE_STRIDE;
-      const sa = ids[2 * i] * STATE_STRIDE;
-      const sb = ids[2 * i + 1] * STATE_STRIDE;
-      const mA = d[base + H_MA];
-      const iA = d[base + H_IA];
-      const mB = d[base + H_MB];
-      const iB = d[base + H_IB];
-      let c = state[sa + S_DQC];
-      let s = state[sa + S_DQS];
-      const rAx = c * d[base + H_RAX0] - s * d[base + H_RAY0];
-      const rAy = s * d[base + H_RAX0] + c * d[base + H_RAY0];
-      c = state[sb + S_DQC];
-      s = state[sb + S_DQS];
-      const rBx = c * d[base + H_RBX0] - s * d[base + H_RBY0];
-      const rBy = s * d[base + H_RBX0] + c * d[base + H_RBY0];
-      const px = d[base + H_LX];
-      const py = d[base + H_LY];
-      const vAx = state[sa + S_VX];
-      const vAy = state[sa + S_VY];
-      const wA = state[sa + S_W];
-      const vBx = state[sb + S_VX];
-      const vBy = state[sb + S_VY];
-      const wB = state[sb + S_W];
+      const base = i * H.STRIDE;
+      const sa = ids[2 * i] * S.STRIDE;
+      const sb = ids[2 * i + 1] * S.STRIDE;
+      const mA = d[base + H.MA];
+      const iA = d[base + H.IA];
+      const mB = d[base + H.MB];
+      const iB = d[base + H.IB];
+      let c = state[sa + S.DQC];
+      let s = state[sa + S.DQS];
+      const rAx = c * d[base + H.RAX0] - s * d[base + H.RAY0];
+      const rAy = s * d[base + H.RAX0] + c * d[base + H.RAY0];
+      c = state[sb + S.DQC];
+      s = state[sb + S.DQS];
+      const rBx = c * d[base + H.RBX0] - s * d[base + H.RBY0];
+      const rBy = s * d[base + H.RBX0] + c * d[base + H.RBY0];
+      const px = d[base + H.LX];
+      const py = d[base + H.LY];
+      const vAx = state[sa + S.VX];
+      const vAy = state[sa + S.VY];
+      const wA = state[sa + S.W];
+      const vBx = state[sb + S.VX];
+      const vBy = state[sb + S.VY];
+      const wB = state[sb + S.W];
       // `+ 0` as the revolute joint's warm start adds its (here zero) axial impulse: the same bits
       const nAx = vAx - mA * px;
       const nAy = vAy - mA * py;
@@ -166,21 +171,22 @@ export class HingeBatch {
         Math.abs(nwA) <= turnLimit &&
         Math.abs(nwB) <= turnLimit
       ) {
-        state[sa + S_VX] = nAx;
-        state[sa + S_VY] = nAy;
-        state[sa + S_W] = nwA;
-        state[sb + S_VX] = nBx;
-        state[sb + S_VY] = nBy;
-        state[sb + S_W] = nwB;
+        state[sa + S.VX] = nAx;
+        state[sa + S.VY] = nAy;
+        state[sa + S.W] = nwA;
+        state[sb + S.VX] = nBx;
+        state[sb + S.VY] = nBy;
+        state[sb + S.W] = nwB;
       } else {
-        d[base + H_LX] = 0;
-        d[base + H_LY] = 0;
+        d[base + H.LX] = 0;
+        d[base + H.LY] = 0;
       }
     }
   }
 
   /** One Gauss-Seidel pass over the hinges' point rows, soft with `useBias`, rigid without. */
   solve(state: Float64Array, soft: Softness, useBias: boolean): void {
+    if (this.count === 0) return; // as in warmStart
     const d = this.data;
     const ids = this.ids;
     // read in every call, so that both passes give the loads type feedback (a load that only the
@@ -192,29 +198,29 @@ export class HingeBatch {
     const massScale = useBias ? softMassScale : 1;
     const impulseScale = useBias ? softImpulseScale : 0;
     for (let i = 0, n = this.count; i < n; i++) {
-      const base = i * HINGE_STRIDE;
-      const sa = ids[2 * i] * STATE_STRIDE;
-      const sb = ids[2 * i + 1] * STATE_STRIDE;
-      const mA = d[base + H_MA];
-      const iA = d[base + H_IA];
-      const mB = d[base + H_MB];
-      const iB = d[base + H_IB];
-      let c = state[sa + S_DQC];
-      let s = state[sa + S_DQS];
-      const rAx = c * d[base + H_RAX0] - s * d[base + H_RAY0];
-      const rAy = s * d[base + H_RAX0] + c * d[base + H_RAY0];
-      c = state[sb + S_DQC];
-      s = state[sb + S_DQS];
-      const rBx = c * d[base + H_RBX0] - s * d[base + H_RBY0];
-      const rBy = s * d[base + H_RBX0] + c * d[base + H_RBY0];
-      const sepX = state[sb + S_DPX] - state[sa + S_DPX] + d[base + H_DCX] + rBx - rAx;
-      const sepY = state[sb + S_DPY] - state[sa + S_DPY] + d[base + H_DCY] + rBy - rAy;
-      let vAx = state[sa + S_VX];
-      let vAy = state[sa + S_VY];
-      let wA = state[sa + S_W];
-      let vBx = state[sb + S_VX];
-      let vBy = state[sb + S_VY];
-      let wB = state[sb + S_W];
+      const base = i * H.STRIDE;
+      const sa = ids[2 * i] * S.STRIDE;
+      const sb = ids[2 * i + 1] * S.STRIDE;
+      const mA = d[base + H.MA];
+      const iA = d[base + H.IA];
+      const mB = d[base + H.MB];
+      const iB = d[base + H.IB];
+      let c = state[sa + S.DQC];
+      let s = state[sa + S.DQS];
+      const rAx = c * d[base + H.RAX0] - s * d[base + H.RAY0];
+      const rAy = s * d[base + H.RAX0] + c * d[base + H.RAY0];
+      c = state[sb + S.DQC];
+      s = state[sb + S.DQS];
+      const rBx = c * d[base + H.RBX0] - s * d[base + H.RBY0];
+      const rBy = s * d[base + H.RBX0] + c * d[base + H.RBY0];
+      const sepX = state[sb + S.DPX] - state[sa + S.DPX] + d[base + H.DCX] + rBx - rAx;
+      const sepY = state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy;
+      let vAx = state[sa + S.VX];
+      let vAy = state[sa + S.VY];
+      let wA = state[sa + S.W];
+      let vBx = state[sb + S.VX];
+      let vBy = state[sb + S.VY];
+      let wB = state[sb + S.W];
       const bx = vBx - wB * rBy - vAx + wA * rAy + biasRate * sepX;
       const by = vBy + wB * rBx - vAy - wA * rAx + biasRate * sepY;
       const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
@@ -222,24 +228,24 @@ export class HingeBatch {
       const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
       let det = k11 * k22 - k12 * k12;
       if (det !== 0) det = 1 / det;
-      const lx = d[base + H_LX];
-      const ly = d[base + H_LY];
+      const lx = d[base + H.LX];
+      const ly = d[base + H.LY];
       const px = -massScale * (det * (k22 * bx - k12 * by)) - impulseScale * lx;
       const py = -massScale * (det * (k11 * by - k12 * bx)) - impulseScale * ly;
-      d[base + H_LX] = lx + px;
-      d[base + H_LY] = ly + py;
+      d[base + H.LX] = lx + px;
+      d[base + H.LY] = ly + py;
       vAx -= mA * px;
       vAy -= mA * py;
       wA -= iA * (rAx * py - rAy * px);
       vBx += mB * px;
       vBy += mB * py;
       wB += iB * (rBx * py - rBy * px);
-      state[sa + S_VX] = vAx;
-      state[sa + S_VY] = vAy;
-      state[sa + S_W] = wA;
-      state[sb + S_VX] = vBx;
-      state[sb + S_VY] = vBy;
-      state[sb + S_W] = wB;
+      state[sa + S.VX] = vAx;
+      state[sa + S.VY] = vAy;
+      state[sa + S.W] = wA;
+      state[sb + S.VX] = vBx;
+      state[sb + S.VY] = vBy;
+      state[sb + S.W] = wB;
     }
   }
 }

@@ -3,7 +3,7 @@ import type { JointTree } from './joint-tree';
 
 /** What every joint needs from the step: the body columns and the substep's constants. */
 export interface JointContext {
-  /** solver state, STATE_STRIDE doubles per body slot (velocities, step deltas) */
+  /** solver state, S.STRIDE doubles per body slot (velocities, step deltas) */
   state: Float64Array;
   invMass: Float64Array;
   invInertia: Float64Array;

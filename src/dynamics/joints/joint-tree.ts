@@ -1,5 +1,5 @@
 import { growF64, growI32, growU8 } from '../../core/grow';
-import { DYNAMIC, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { BodyKind, S } from '../body-store';
 import type { Joint } from './joint';
 import type { JointContext } from './joint-context';
 
@@ -49,8 +49,10 @@ export const CLOSURE_REGULARIZATION = 0.05;
 const MAX_AXIALS = 16;
 
 /** rows and columns of a node block: a body's 3 plus up to 3 rows of a grounded joint */
-const S = 6;
-const SS = S * S;
+enum Block {
+  ROWS = 6,
+  SIZE = ROWS * ROWS,
+}
 const BODY = 0;
 
 export class JointTree {
@@ -107,11 +109,11 @@ export class JointTree {
   private nodeBody = new Int32Array(32);
   private nodeGround = new Int32Array(32);
   private parent = new Int32Array(32);
-  /** per node: pivot D and its inverse (S × S), and L = D⁻¹ H to the parent (3 × 3, see factorTree) */
-  private d = new Float64Array(32 * SS);
-  private dInv = new Float64Array(32 * SS);
+  /** per node: pivot D and its inverse (Block.ROWS squared), and L = D⁻¹ H to the parent (3 × 3, see factorTree) */
+  private d = new Float64Array(32 * Block.SIZE);
+  private dInv = new Float64Array(32 * Block.SIZE);
   private l = new Float64Array(32 * 9);
-  private x = new Float64Array(32 * S);
+  private x = new Float64Array(32 * Block.ROWS);
   /** scratch of buildNodes: the breadth-first order, then each old node's new index */
   private order = new Int32Array(32);
   private rank = new Int32Array(32);
@@ -173,8 +175,8 @@ export class JointTree {
     let ground = -1;
     for (let j = 0; j < active.length && ground === -1; j++) {
       const joint = active[j];
-      if (kind[joint.bodyA.slot] !== DYNAMIC) ground = joint.bodyA.slot;
-      else if (kind[joint.bodyB.slot] !== DYNAMIC) ground = joint.bodyB.slot;
+      if (kind[joint.bodyA.slot] !== BodyKind.DYNAMIC) ground = joint.bodyA.slot;
+      else if (kind[joint.bodyB.slot] !== BodyKind.DYNAMIC) ground = joint.bodyB.slot;
     }
     if (this.activeA.length < active.length) {
       const cap = Math.max(2 * this.activeA.length, active.length);
@@ -201,8 +203,8 @@ export class JointTree {
       const joint = active[j];
       const a = this.activeA[j];
       const b = this.activeB[j];
-      const dynA = kind[a] === DYNAMIC;
-      const dynB = kind[b] === DYNAMIC;
+      const dynA = kind[a] === BodyKind.DYNAMIC;
+      const dynB = kind[b] === BodyKind.DYNAMIC;
       if (this.loops[this.findCluster(dynA ? a : b)] > MAX_LOOPS) continue;
       // every non-dynamic body counts as one node, the ground, so loops through it are refused too:
       // a bar pinned at both ends is redundant, and its system singular
@@ -270,7 +272,7 @@ export class JointTree {
       if (activeEligible[j] === 0) continue;
       const a = activeA[j];
       const b = activeB[j];
-      if (kind[a] === DYNAMIC && kind[b] === DYNAMIC) {
+      if (kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) {
         const ra = this.findCluster(a);
         const rb = this.findCluster(b);
         if (ra !== rb) this.cluster[ra] = rb;
@@ -280,12 +282,12 @@ export class JointTree {
       if (activeEligible[j] === 0) continue;
       const a = activeA[j];
       const b = activeB[j];
-      const r = this.findCluster(kind[a] === DYNAMIC ? a : b);
+      const r = this.findCluster(kind[a] === BodyKind.DYNAMIC ? a : b);
       loops[r]++;
-      if (kind[a] !== DYNAMIC || kind[b] !== DYNAMIC) this.clusterGrounded[r] = 1;
+      if (kind[a] !== BodyKind.DYNAMIC || kind[b] !== BodyKind.DYNAMIC) this.clusterGrounded[r] = 1;
       for (let side = 0; side < 2; side++) {
         const body = side === 0 ? a : b;
-        if (kind[body] !== DYNAMIC || this.counted[body] !== 0) continue;
+        if (kind[body] !== BodyKind.DYNAMIC || this.counted[body] !== 0) continue;
         this.counted[body] = 1;
         loops[r]--;
       }
@@ -362,10 +364,10 @@ export class JointTree {
     this.adjNext = growI32(this.adjNext, 2 * cap);
     this.adjTo = growI32(this.adjTo, 2 * cap);
     this.visited = growU8(this.visited, cap);
-    this.d = growF64(this.d, cap * SS);
-    this.dInv = growF64(this.dInv, cap * SS);
+    this.d = growF64(this.d, cap * Block.SIZE);
+    this.dInv = growF64(this.dInv, cap * Block.SIZE);
     this.l = growF64(this.l, cap * 9);
-    this.x = growF64(this.x, cap * S);
+    this.x = growF64(this.x, cap * Block.ROWS);
   }
 
   private addEdge(edge: number, from: number, to: number): void {
@@ -403,11 +405,11 @@ export class JointTree {
       this.slotB[j] = b;
       let nodeA = -1;
       let nodeB = -1;
-      if (kind[a] === DYNAMIC) {
+      if (kind[a] === BodyKind.DYNAMIC) {
         nodeA = this.nodeFor(a, nodes);
         if (nodeA === nodes) nodes++;
       }
-      if (kind[b] === DYNAMIC) {
+      if (kind[b] === BodyKind.DYNAMIC) {
         nodeB = this.nodeFor(b, nodes);
         if (nodeB === nodes) nodes++;
       }
@@ -527,16 +529,16 @@ export class JointTree {
       const nodeA = this.axialNodeA[i];
       const nodeB = this.axialNodeB[i];
       this.axials[i].axialJacobian(state, jA, jB);
-      x.fill(0, 0, S * this.nodeCount);
+      x.fill(0, 0, Block.ROWS * this.nodeCount);
       for (let c = 0; c < 3; c++) {
-        if (nodeA !== -1) x[S * nodeA + c] = jA[c];
-        if (nodeB !== -1) x[S * nodeB + c] = jB[c];
+        if (nodeA !== -1) x[Block.ROWS * nodeA + c] = jA[c];
+        if (nodeB !== -1) x[Block.ROWS * nodeB + c] = jB[c];
       }
       this.substitute();
       let k = 0;
       for (let c = 0; c < 3; c++) {
-        if (nodeA !== -1) k += jA[c] * x[S * nodeA + c];
-        if (nodeB !== -1) k += jB[c] * x[S * nodeB + c];
+        if (nodeA !== -1) k += jA[c] * x[Block.ROWS * nodeA + c];
+        if (nodeB !== -1) k += jB[c] * x[Block.ROWS * nodeB + c];
       }
       this.axials[i].treeAxialMass = k > 0 ? 1 / k : 0;
     }
@@ -564,7 +566,7 @@ export class JointTree {
     const dInv = this.dInv;
     const l = this.l;
     for (let n = 0; n < nodes; n++) {
-      const o = SS * n;
+      const o = Block.SIZE * n;
       invertBlock(d, dInv, o, this.nodeDim[n]);
       const p = parent[n];
       if (p === -1) continue;
@@ -588,9 +590,9 @@ export class JointTree {
       const i00 = dInv[o];
       const i01 = dInv[o + 1];
       const i02 = dInv[o + 2];
-      const i11 = dInv[o + S + 1];
-      const i12 = dInv[o + S + 2];
-      const i22 = dInv[o + 2 * S + 2];
+      const i11 = dInv[o + Block.ROWS + 1];
+      const i12 = dInv[o + Block.ROWS + 2];
+      const i22 = dInv[o + 2 * Block.ROWS + 2];
       // L = D⁻¹ H (D⁻¹ is symmetric)
       const l00 = i00 * h00 + i01 * h10 + i02 * h20;
       const l01 = i00 * h01 + i01 * h11 + i02 * h21;
@@ -612,7 +614,7 @@ export class JointTree {
       l[lo + 7] = l21;
       l[lo + 8] = l22;
       // D_p -= Hᵀ L, which is symmetric
-      const op = SS * p;
+      const op = Block.SIZE * p;
       const e00 = h00 * l00 + h10 * l10 + h20 * l20;
       const e01 = h00 * l01 + h10 * l11 + h20 * l21;
       const e02 = h00 * l02 + h10 * l12 + h20 * l22;
@@ -622,12 +624,12 @@ export class JointTree {
       d[op] -= e00;
       d[op + 1] -= e01;
       d[op + 2] -= e02;
-      d[op + S] -= e01;
-      d[op + S + 1] -= e11;
-      d[op + S + 2] -= e12;
-      d[op + 2 * S] -= e02;
-      d[op + 2 * S + 1] -= e12;
-      d[op + 2 * S + 2] -= e22;
+      d[op + Block.ROWS] -= e01;
+      d[op + Block.ROWS + 1] -= e11;
+      d[op + Block.ROWS + 2] -= e12;
+      d[op + 2 * Block.ROWS] -= e02;
+      d[op + 2 * Block.ROWS + 1] -= e12;
+      d[op + 2 * Block.ROWS + 2] -= e22;
     }
   }
 
@@ -652,20 +654,20 @@ export class JointTree {
       k.fill(0);
       const rows = joint.treeRows();
       for (let r = 0; r < rows; r++) {
-        x.fill(0, 0, S * this.nodeCount);
+        x.fill(0, 0, Block.ROWS * this.nodeCount);
         const m = 9 * c + 3 * r;
         for (let i = 0; i < 3; i++) {
-          if (nodeA !== -1) x[S * nodeA + i] += jA[m + i];
-          if (nodeB !== -1) x[S * nodeB + i] += jB[m + i];
+          if (nodeA !== -1) x[Block.ROWS * nodeA + i] += jA[m + i];
+          if (nodeB !== -1) x[Block.ROWS * nodeB + i] += jB[m + i];
         }
         if (this.jointCount > 0) this.substitute();
         const base = (2 * c + r) * 3 * MAX_CLOSURE_NODES;
         for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
           const o = base + 3 * n;
           const nodeIsBody = this.nodeKind[n] === BODY;
-          response[o] = nodeIsBody ? x[S * n] : 0;
-          response[o + 1] = nodeIsBody ? x[S * n + 1] : 0;
-          response[o + 2] = nodeIsBody ? x[S * n + 2] : 0;
+          response[o] = nodeIsBody ? x[Block.ROWS * n] : 0;
+          response[o + 1] = nodeIsBody ? x[Block.ROWS * n + 1] : 0;
+          response[o + 2] = nodeIsBody ? x[Block.ROWS * n + 2] : 0;
         }
         // K's column r: both rows read the response at the hinge's two bodies (the ground has none)
         for (let side = 0; side < 2; side++) {
@@ -695,12 +697,12 @@ export class JointTree {
     const by = bx + 3 * MAX_CLOSURE_NODES;
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
       if (this.nodeKind[n] !== BODY) continue;
-      const s = this.nodeBody[n] * STATE_STRIDE;
+      const s = this.nodeBody[n] * S.STRIDE;
       const ox = bx + 3 * n;
       const oy = by + 3 * n;
-      state[s + S_VX] += px * response[ox] + py * response[oy];
-      state[s + S_VY] += px * response[ox + 1] + py * response[oy + 1];
-      state[s + S_W] += px * response[ox + 2] + py * response[oy + 2];
+      state[s + S.VX] += px * response[ox] + py * response[oy];
+      state[s + S.VY] += px * response[ox + 1] + py * response[oy + 1];
+      state[s + S.W] += px * response[ox + 2] + py * response[oy + 2];
     }
   }
 
@@ -711,19 +713,19 @@ export class JointTree {
   private fillPivots(invMass: Float64Array, invInertia: Float64Array): void {
     const d = this.d;
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
-      const o = SS * n;
+      const o = Block.SIZE * n;
       const isBody = this.nodeKind[n] === BODY;
       const b = this.nodeBody[n];
       const m = isBody ? 1 / invMass[b] : 0;
       d[o] = m;
       d[o + 1] = 0;
       d[o + 2] = 0;
-      d[o + S] = 0;
-      d[o + S + 1] = m;
-      d[o + S + 2] = 0;
-      d[o + 2 * S] = 0;
-      d[o + 2 * S + 1] = 0;
-      d[o + 2 * S + 2] = isBody ? 1 / invInertia[b] : 0;
+      d[o + Block.ROWS] = 0;
+      d[o + Block.ROWS + 1] = m;
+      d[o + Block.ROWS + 2] = 0;
+      d[o + 2 * Block.ROWS] = 0;
+      d[o + 2 * Block.ROWS + 1] = 0;
+      d[o + 2 * Block.ROWS + 2] = isBody ? 1 / invInertia[b] : 0;
       const g = this.nodeGround[n];
       if (g === -1) continue;
       const block = this.nodeOfA[g] === n ? this.jA : this.jB;
@@ -731,10 +733,10 @@ export class JointTree {
       for (let r = 0; r < rows; r++) {
         for (let c = 0; c < 3; c++) {
           const v = block[9 * g + 3 * r + c];
-          d[o + S * (3 + r) + c] = v;
-          d[o + S * c + 3 + r] = v;
+          d[o + Block.ROWS * (3 + r) + c] = v;
+          d[o + Block.ROWS * c + 3 + r] = v;
         }
-        for (let c = 0; c < rows; c++) d[o + S * (3 + r) + 3 + c] = 0;
+        for (let c = 0; c < rows; c++) d[o + Block.ROWS * (3 + r) + 3 + c] = 0;
       }
     }
   }
@@ -747,22 +749,22 @@ export class JointTree {
     const count = this.jointCount;
     if (count === 0) return;
     const x = this.x;
-    x.fill(0, 0, S * this.nodeCount);
+    x.fill(0, 0, Block.ROWS * this.nodeCount);
     // right-hand side: -(J v + bias) on the joints' rows, 0 on the bodies'
     const jA = this.jA;
     const jB = this.jB;
     const err = this.err;
     for (let j = 0; j < count; j++) {
-      const sa = this.slotA[j] * STATE_STRIDE;
-      const sb = this.slotB[j] * STATE_STRIDE;
-      const vAx = state[sa + S_VX];
-      const vAy = state[sa + S_VY];
-      const wA = state[sa + S_W];
-      const vBx = state[sb + S_VX];
-      const vBy = state[sb + S_VY];
-      const wB = state[sb + S_W];
+      const sa = this.slotA[j] * S.STRIDE;
+      const sb = this.slotB[j] * S.STRIDE;
+      const vAx = state[sa + S.VX];
+      const vAy = state[sa + S.VY];
+      const wA = state[sa + S.W];
+      const vBx = state[sb + S.VX];
+      const vBy = state[sb + S.VY];
+      const wB = state[sb + S.W];
       // three rows each: a joint with fewer has zero rows after its own (see Joint.clearTreeRows)
-      const o = S * this.rowNode[j] + this.rowOffset[j];
+      const o = Block.ROWS * this.rowNode[j] + this.rowOffset[j];
       const m = 9 * j;
       const e = 3 * j;
       x[o] = -(
@@ -796,14 +798,14 @@ export class JointTree {
     this.substitute();
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
       if (this.nodeKind[n] !== BODY) continue;
-      const o = S * n;
-      const s = this.nodeBody[n] * STATE_STRIDE;
-      state[s + S_VX] += x[o];
-      state[s + S_VY] += x[o + 1];
-      state[s + S_W] += x[o + 2];
+      const o = Block.ROWS * n;
+      const s = this.nodeBody[n] * S.STRIDE;
+      state[s + S.VX] += x[o];
+      state[s + S.VY] += x[o + 1];
+      state[s + S.W] += x[o + 2];
     }
     for (let j = 0; j < count; j++) {
-      const o = S * this.rowNode[j] + this.rowOffset[j];
+      const o = Block.ROWS * this.rowNode[j] + this.rowOffset[j];
       this.joints[j].treeAddImpulse(x, o);
     }
   }
@@ -818,14 +820,14 @@ export class JointTree {
     // forward, children first: once a node's children are done its value is final; it goes to the
     // parent (x_p -= Lᵀ x_n) and is then scaled by its pivot (x_n = D⁻¹ x_n)
     for (let n = 0; n < nodes; n++) {
-      const xn = S * n;
-      const o = SS * n;
+      const xn = Block.ROWS * n;
+      const o = Block.SIZE * n;
       const x0 = x[xn];
       const x1 = x[xn + 1];
       const x2 = x[xn + 2];
       const p = parent[n];
       if (p !== -1) {
-        const xp = S * p;
+        const xp = Block.ROWS * p;
         const lo = 9 * n;
         x[xp] -= l[lo] * x0 + l[lo + 3] * x1 + l[lo + 6] * x2;
         x[xp + 1] -= l[lo + 1] * x0 + l[lo + 4] * x1 + l[lo + 7] * x2;
@@ -836,21 +838,22 @@ export class JointTree {
         for (let k = 0; k < dim; k++) scratch[k] = x[xn + k];
         for (let r = 0; r < dim; r++) {
           let s = 0;
-          for (let k = 0; k < dim; k++) s += dInv[o + S * r + k] * scratch[k];
+          for (let k = 0; k < dim; k++) s += dInv[o + Block.ROWS * r + k] * scratch[k];
           x[xn + r] = s;
         }
         continue;
       }
       x[xn] = dInv[o] * x0 + dInv[o + 1] * x1 + dInv[o + 2] * x2;
-      x[xn + 1] = dInv[o + S] * x0 + dInv[o + S + 1] * x1 + dInv[o + S + 2] * x2;
-      x[xn + 2] = dInv[o + 2 * S] * x0 + dInv[o + 2 * S + 1] * x1 + dInv[o + 2 * S + 2] * x2;
+      x[xn + 1] = dInv[o + Block.ROWS] * x0 + dInv[o + Block.ROWS + 1] * x1 + dInv[o + Block.ROWS + 2] * x2;
+      x[xn + 2] =
+        dInv[o + 2 * Block.ROWS] * x0 + dInv[o + 2 * Block.ROWS + 1] * x1 + dInv[o + 2 * Block.ROWS + 2] * x2;
     }
     // backward, parents first: x_n -= L x_p
     for (let n = nodes - 1; n >= 0; n--) {
       const p = parent[n];
       if (p === -1) continue;
-      const xn = S * n;
-      const xp = S * p;
+      const xn = Block.ROWS * n;
+      const xp = Block.ROWS * p;
       const lo = 9 * n;
       const x0 = x[xp];
       const x1 = x[xp + 1];
@@ -878,19 +881,19 @@ function eligible(
   invInertia: Float64Array,
 ): boolean {
   if (joint.treeRows() === 0) return false;
-  const dynA = kind[a] === DYNAMIC;
-  const dynB = kind[b] === DYNAMIC;
+  const dynA = kind[a] === BodyKind.DYNAMIC;
+  const dynB = kind[b] === BodyKind.DYNAMIC;
   if (!dynA && !dynB) return false;
   if (dynA && (invInertia[a] === 0 || invMass[a] === 0)) return false;
   if (dynB && (invInertia[b] === 0 || invMass[b] === 0)) return false;
   return true;
 }
 
-const scratch = new Float64Array(S);
-const work = new Float64Array(SS);
+const scratch = new Float64Array(Block.ROWS);
+const work = new Float64Array(Block.SIZE);
 
 /**
- * Inverts the symmetric dim × dim block at `o` (stride S) of `m` into `out`: in closed form up to
+ * Inverts the symmetric dim × dim block at `o` (stride Block.ROWS) of `m` into `out`: in closed form up to
  * 3 rows, zeroing the rest of the 3 × 3 block, else (a root with its grounded joint's rows) by
  * Gauss-Jordan elimination in natural order. No pivoting is needed here: a block is either positive
  * definite (a body), negative definite (a joint) or a body's positive definite rows followed by its
@@ -911,24 +914,24 @@ function invertBlock(m: Float64Array, out: Float64Array, o: number, dim: number)
   }
   for (let r = 0; r < dim; r++) {
     for (let c = 0; c < dim; c++) {
-      work[S * r + c] = m[o + S * r + c];
-      out[o + S * r + c] = r === c ? 1 : 0;
+      work[Block.ROWS * r + c] = m[o + Block.ROWS * r + c];
+      out[o + Block.ROWS * r + c] = r === c ? 1 : 0;
     }
   }
   for (let k = 0; k < dim; k++) {
-    const pivot = work[S * k + k];
+    const pivot = work[Block.ROWS * k + k];
     const inv = pivot !== 0 ? 1 / pivot : 0;
     for (let c = 0; c < dim; c++) {
-      work[S * k + c] *= inv;
-      out[o + S * k + c] *= inv;
+      work[Block.ROWS * k + c] *= inv;
+      out[o + Block.ROWS * k + c] *= inv;
     }
     for (let r = 0; r < dim; r++) {
       if (r === k) continue;
-      const f = work[S * r + k];
+      const f = work[Block.ROWS * r + k];
       if (f === 0) continue;
       for (let c = 0; c < dim; c++) {
-        work[S * r + c] -= f * work[S * k + c];
-        out[o + S * r + c] -= f * out[o + S * k + c];
+        work[Block.ROWS * r + c] -= f * work[Block.ROWS * k + c];
+        out[o + Block.ROWS * r + c] -= f * out[o + Block.ROWS * k + c];
       }
     }
   }
@@ -940,31 +943,31 @@ function invert1(m: Float64Array, out: Float64Array, o: number): void {
   out[o] = a !== 0 ? 1 / a : 0;
   out[o + 1] = 0;
   out[o + 2] = 0;
-  out[o + S] = 0;
-  out[o + S + 1] = 0;
-  out[o + S + 2] = 0;
-  out[o + 2 * S] = 0;
-  out[o + 2 * S + 1] = 0;
-  out[o + 2 * S + 2] = 0;
+  out[o + Block.ROWS] = 0;
+  out[o + Block.ROWS + 1] = 0;
+  out[o + Block.ROWS + 2] = 0;
+  out[o + 2 * Block.ROWS] = 0;
+  out[o + 2 * Block.ROWS + 1] = 0;
+  out[o + 2 * Block.ROWS + 2] = 0;
 }
 
 /** Closed-form inverse of a symmetric 2 × 2 block (the rows of a hinge). */
 function invert2(m: Float64Array, out: Float64Array, o: number): void {
   const a = m[o];
   const b = m[o + 1];
-  const c = m[o + S + 1];
+  const c = m[o + Block.ROWS + 1];
   let det = a * c - b * b;
   if (det !== 0) det = 1 / det;
   out[o] = det * c;
   out[o + 1] = -det * b;
-  out[o + S] = -det * b;
-  out[o + S + 1] = det * a;
+  out[o + Block.ROWS] = -det * b;
+  out[o + Block.ROWS + 1] = det * a;
   // the third row and column stay zero: the joint's padding row (see factorTree)
   out[o + 2] = 0;
-  out[o + S + 2] = 0;
-  out[o + 2 * S] = 0;
-  out[o + 2 * S + 1] = 0;
-  out[o + 2 * S + 2] = 0;
+  out[o + Block.ROWS + 2] = 0;
+  out[o + 2 * Block.ROWS] = 0;
+  out[o + 2 * Block.ROWS + 1] = 0;
+  out[o + 2 * Block.ROWS + 2] = 0;
 }
 
 /** Closed-form inverse of a symmetric 3 × 3 block (a body, or the rows of a weld), by cofactors. */
@@ -972,9 +975,9 @@ function invert3(m: Float64Array, out: Float64Array, o: number): void {
   const a11 = m[o];
   const a12 = m[o + 1];
   const a13 = m[o + 2];
-  const a22 = m[o + S + 1];
-  const a23 = m[o + S + 2];
-  const a33 = m[o + 2 * S + 2];
+  const a22 = m[o + Block.ROWS + 1];
+  const a23 = m[o + Block.ROWS + 2];
+  const a33 = m[o + 2 * Block.ROWS + 2];
   const c11 = a22 * a33 - a23 * a23;
   const c12 = a13 * a23 - a12 * a33;
   const c13 = a12 * a23 - a13 * a22;
@@ -986,10 +989,10 @@ function invert3(m: Float64Array, out: Float64Array, o: number): void {
   out[o] = det * c11;
   out[o + 1] = i12;
   out[o + 2] = i13;
-  out[o + S] = i12;
-  out[o + S + 1] = det * (a11 * a33 - a13 * a13);
-  out[o + S + 2] = i23;
-  out[o + 2 * S] = i13;
-  out[o + 2 * S + 1] = i23;
-  out[o + 2 * S + 2] = det * (a11 * a22 - a12 * a12);
+  out[o + Block.ROWS] = i12;
+  out[o + Block.ROWS + 1] = det * (a11 * a33 - a13 * a13);
+  out[o + Block.ROWS + 2] = i23;
+  out[o + 2 * Block.ROWS] = i13;
+  out[o + 2 * Block.ROWS + 1] = i23;
+  out[o + 2 * Block.ROWS + 2] = det * (a11 * a22 - a12 * a12);
 }

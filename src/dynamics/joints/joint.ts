@@ -1,29 +1,16 @@
 import { FulcrumError } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_DPX, S_DPY, S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import type { World } from '../world';
-import {
-  H_DCX,
-  H_DCY,
-  H_IA,
-  H_IB,
-  H_MA,
-  H_MB,
-  H_RAX0,
-  H_RAY0,
-  H_RBX0,
-  H_RBY0,
-  HINGE_STRIDE,
-  writeStepData,
-} from './hinge-batch';
+import { H, writeStepData } from './hinge-batch';
 import type { JointContext } from './joint-context';
 import { relativeAngle } from './joint-math';
 
 export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'mouse' | 'motor';
 
 /** prepareBase's body data and anchors, in the hinge batch's layout, and its local anchors */
-const baseScratch = new Float64Array(HINGE_STRIDE);
+const baseScratch = new Float64Array(H.STRIDE);
 const anchorScratch = new Float64Array(4);
 
 /**
@@ -138,16 +125,16 @@ export abstract class Joint {
   prepareBase(ctx: JointContext): void {
     const d = baseScratch;
     this.writeBase(ctx, d, 0, anchorScratch, 0);
-    this.mA = d[H_MA];
-    this.iA = d[H_IA];
-    this.mB = d[H_MB];
-    this.iB = d[H_IB];
-    this.rAx0 = d[H_RAX0];
-    this.rAy0 = d[H_RAY0];
-    this.rBx0 = d[H_RBX0];
-    this.rBy0 = d[H_RBY0];
-    this.dcx = d[H_DCX];
-    this.dcy = d[H_DCY];
+    this.mA = d[H.MA];
+    this.iA = d[H.IA];
+    this.mB = d[H.MB];
+    this.iB = d[H.IB];
+    this.rAx0 = d[H.RAX0];
+    this.rAy0 = d[H.RAY0];
+    this.rBx0 = d[H.RBX0];
+    this.rBy0 = d[H.RBY0];
+    this.dcx = d[H.DCX];
+    this.dcy = d[H.DCY];
     this.rAx = this.rAx0;
     this.rAy = this.rAy0;
     this.rBx = this.rBx0;
@@ -156,7 +143,7 @@ export abstract class Joint {
 
   /**
    * Sets the bodies' slots and the step's 1/h, and writes the step's body data and anchors in the
-   * hinge batch's layout (H_MA .. H_DCY) to `d` at `base`; the local anchors go to `anchors` at `k`.
+   * hinge batch's layout (H.MA .. H.DCY) to `d` at `base`; the local anchors go to `anchors` at `k`.
    */
   private writeBase(
     ctx: JointContext,
@@ -179,18 +166,18 @@ export abstract class Joint {
 
   /** Rotates the anchors by the bodies' rotation so far in the step and measures their separation. */
   protected updateAnchors(state: Float64Array): void {
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    let c = state[sa + S_DQC];
-    let s = state[sa + S_DQS];
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
+    let c = state[sa + S.DQC];
+    let s = state[sa + S.DQS];
     this.rAx = c * this.rAx0 - s * this.rAy0;
     this.rAy = s * this.rAx0 + c * this.rAy0;
-    c = state[sb + S_DQC];
-    s = state[sb + S_DQS];
+    c = state[sb + S.DQC];
+    s = state[sb + S.DQS];
     this.rBx = c * this.rBx0 - s * this.rBy0;
     this.rBy = s * this.rBx0 + c * this.rBy0;
-    this.sepX = state[sb + S_DPX] - state[sa + S_DPX] + this.dcx + this.rBx - this.rAx;
-    this.sepY = state[sb + S_DPY] - state[sa + S_DPY] + this.dcy + this.rBy - this.rAy;
+    this.sepX = state[sb + S.DPX] - state[sa + S.DPX] + this.dcx + this.rBx - this.rAx;
+    this.sepY = state[sb + S.DPY] - state[sa + S.DPY] + this.dcy + this.rBy - this.rAy;
   }
 
   /** @internal angular mass of the joint's limit and motor row through the tree (0 = its own) */
@@ -270,10 +257,10 @@ export abstract class Joint {
     jB[m] = 0;
     jB[m + 1] = 0;
     jB[m + 2] = 1;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
     err[3 * j + row] =
-      angle0 + relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+      angle0 + relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
   }
 
   /** Writes the two point rows (anchor B minus anchor A) of tree joint `j`; anchors must be current. */
@@ -359,36 +346,36 @@ export abstract class Joint {
    */
   warmStartGuarded(ctx: JointContext): void {
     const state = ctx.state;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    const vAx = state[sa + S_VX];
-    const vAy = state[sa + S_VY];
-    const wA = state[sa + S_W];
-    const vBx = state[sb + S_VX];
-    const vBy = state[sb + S_VY];
-    const wB = state[sb + S_W];
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
+    const vAx = state[sa + S.VX];
+    const vAy = state[sa + S.VY];
+    const wA = state[sa + S.W];
+    const vBx = state[sb + S.VX];
+    const vBy = state[sb + S.VY];
+    const wB = state[sb + S.W];
     this.warmStart(ctx);
     const v2 = ctx.warmSpeedLimit * ctx.warmSpeedLimit;
     const w = ctx.warmTurnLimit;
-    const nAx = state[sa + S_VX];
-    const nAy = state[sa + S_VY];
-    const nBx = state[sb + S_VX];
-    const nBy = state[sb + S_VY];
+    const nAx = state[sa + S.VX];
+    const nAy = state[sa + S.VY];
+    const nBx = state[sb + S.VX];
+    const nBy = state[sb + S.VY];
     // written so that NaN fails the test too
     if (
       nAx * nAx + nAy * nAy <= v2 &&
       nBx * nBx + nBy * nBy <= v2 &&
-      Math.abs(state[sa + S_W]) <= w &&
-      Math.abs(state[sb + S_W]) <= w
+      Math.abs(state[sa + S.W]) <= w &&
+      Math.abs(state[sb + S.W]) <= w
     ) {
       return;
     }
-    state[sa + S_VX] = vAx;
-    state[sa + S_VY] = vAy;
-    state[sa + S_W] = wA;
-    state[sb + S_VX] = vBx;
-    state[sb + S_VY] = vBy;
-    state[sb + S_W] = wB;
+    state[sa + S.VX] = vAx;
+    state[sa + S.VY] = vAy;
+    state[sa + S.W] = wA;
+    state[sb + S.VX] = vBx;
+    state[sb + S.VY] = vBy;
+    state[sb + S.W] = wB;
     this.forgetImpulses();
   }
   /** @internal */

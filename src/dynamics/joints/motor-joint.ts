@@ -1,7 +1,7 @@
 import { checkFinite, checkNonNegative, checkVec2 } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import type { World } from '../world';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
@@ -107,43 +107,43 @@ export class MotorJoint extends Joint {
   /** @internal */
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    state[sa + S_VX] -= this.mA * this.linearX;
-    state[sa + S_VY] -= this.mA * this.linearY;
-    state[sa + S_W] -= this.iA * this.angularImpulse;
-    state[sb + S_VX] += this.mB * this.linearX;
-    state[sb + S_VY] += this.mB * this.linearY;
-    state[sb + S_W] += this.iB * this.angularImpulse;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
+    state[sa + S.VX] -= this.mA * this.linearX;
+    state[sa + S.VY] -= this.mA * this.linearY;
+    state[sa + S.W] -= this.iA * this.angularImpulse;
+    state[sb + S.VX] += this.mB * this.linearX;
+    state[sb + S.VY] += this.mB * this.linearY;
+    state[sb + S.W] += this.iB * this.angularImpulse;
   }
 
   /** @internal */
   solve(ctx: JointContext, _useBias: boolean): void {
     const state = ctx.state;
     const o = this.o;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
     const correction = o.correctionFactor * ctx.invH;
     const k = this.iA + this.iB;
     if (k > 0) {
       const C =
         this.angle0 +
-        relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+        relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
       const max = o.maxTorque * ctx.h;
       const old = this.angularImpulse;
-      const cdot = state[sb + S_W] - state[sa + S_W] + correction * C;
+      const cdot = state[sb + S.W] - state[sa + S.W] + correction * C;
       this.angularImpulse = Math.max(-max, Math.min(old - cdot / k, max));
       const impulse = this.angularImpulse - old;
-      state[sa + S_W] -= this.iA * impulse;
-      state[sb + S_W] += this.iB * impulse;
+      state[sa + S.W] -= this.iA * impulse;
+      state[sb + S.W] += this.iB * impulse;
     }
     const m = this.mA + this.mB;
     if (m > 0) {
       this.updateAnchors(state);
       const cx = this.sepX - this.offsetX;
       const cy = this.sepY - this.offsetY;
-      const cdotX = state[sb + S_VX] - state[sa + S_VX] + correction * cx;
-      const cdotY = state[sb + S_VY] - state[sa + S_VY] + correction * cy;
+      const cdotX = state[sb + S.VX] - state[sa + S.VX] + correction * cx;
+      const cdotY = state[sb + S.VY] - state[sa + S.VY] + correction * cy;
       const oldX = this.linearX;
       const oldY = this.linearY;
       let ix = oldX - cdotX / m;
@@ -157,10 +157,10 @@ export class MotorJoint extends Joint {
       }
       this.linearX = ix;
       this.linearY = iy;
-      state[sa + S_VX] -= this.mA * (ix - oldX);
-      state[sa + S_VY] -= this.mA * (iy - oldY);
-      state[sb + S_VX] += this.mB * (ix - oldX);
-      state[sb + S_VY] += this.mB * (iy - oldY);
+      state[sa + S.VX] -= this.mA * (ix - oldX);
+      state[sa + S.VY] -= this.mA * (iy - oldY);
+      state[sb + S.VX] += this.mB * (ix - oldX);
+      state[sb + S.VY] += this.mB * (iy - oldY);
     }
   }
 }

@@ -1,7 +1,7 @@
 import { checkVec2 } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_DPX, S_DPY, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import { makeSoftness, type Softness } from '../softness';
 import type { World } from '../world';
 import { Joint } from './joint';
@@ -81,27 +81,27 @@ export class MouseJoint extends Joint {
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.updateAnchors(state);
-    const sb = this.b * STATE_STRIDE;
-    state[sb + S_VX] += this.mB * this.impulseX;
-    state[sb + S_VY] += this.mB * this.impulseY;
-    state[sb + S_W] += this.iB * (this.rBx * this.impulseY - this.rBy * this.impulseX);
+    const sb = this.b * S.STRIDE;
+    state[sb + S.VX] += this.mB * this.impulseX;
+    state[sb + S.VY] += this.mB * this.impulseY;
+    state[sb + S.W] += this.iB * (this.rBx * this.impulseY - this.rBy * this.impulseX);
   }
 
   /** @internal */
   solve(ctx: JointContext, _useBias: boolean): void {
     const state = ctx.state;
     this.updateAnchors(state);
-    const sb = this.b * STATE_STRIDE;
+    const sb = this.b * S.STRIDE;
     const mB = this.mB;
     const iB = this.iB;
     const rBx = this.rBx;
     const rBy = this.rBy;
-    let vx = state[sb + S_VX];
-    let vy = state[sb + S_VY];
-    let w = state[sb + S_W];
+    let vx = state[sb + S.VX];
+    let vy = state[sb + S.VY];
+    let w = state[sb + S.W];
     // the spring acts in both passes: it is a soft force, not an error to be relaxed away
-    const cx = this.cBx + state[sb + S_DPX] + rBx - this.o.targetX;
-    const cy = this.cBy + state[sb + S_DPY] + rBy - this.o.targetY;
+    const cx = this.cBx + state[sb + S.DPX] + rBx - this.o.targetX;
+    const cy = this.cBy + state[sb + S.DPY] + rBy - this.o.targetY;
     const cdotX = vx - w * rBy;
     const cdotY = vy + w * rBx;
     const k11 = mB + rBy * rBy * iB;
@@ -126,8 +126,8 @@ export class MouseJoint extends Joint {
     vx += mB * px;
     vy += mB * py;
     w += iB * (rBx * py - rBy * px);
-    state[sb + S_VX] = vx;
-    state[sb + S_VY] = vy;
-    state[sb + S_W] = w;
+    state[sb + S.VX] = vx;
+    state[sb + S.VY] = vy;
+    state[sb + S.W] = w;
   }
 }

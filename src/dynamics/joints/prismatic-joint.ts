@@ -1,7 +1,7 @@
 import { checkBoolean, checkFinite, checkNonNegative } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_DQC, S_DQS, S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import type { World } from '../world';
 import type { JointContext } from './joint-context';
 import { relativeAngle } from './joint-math';
@@ -133,8 +133,8 @@ export class PrismaticJoint extends SliderJoint {
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.warmStartSlider(state);
-    state[this.a * STATE_STRIDE + S_W] -= this.iA * this.angularImpulse;
-    state[this.b * STATE_STRIDE + S_W] += this.iB * this.angularImpulse;
+    state[this.a * S.STRIDE + S.W] -= this.iA * this.angularImpulse;
+    state[this.b * S.STRIDE + S.W] += this.iB * this.angularImpulse;
   }
 
   /** @internal */
@@ -155,25 +155,25 @@ export class PrismaticJoint extends SliderJoint {
     // no rotation relative to A
     const k = this.iA + this.iB;
     if (k > 0 && !this.inTree) {
-      const sa = this.a * STATE_STRIDE;
-      const sb = this.b * STATE_STRIDE;
+      const sa = this.a * S.STRIDE;
+      const sb = this.b * S.STRIDE;
       let bias = 0;
       let massScale = 1;
       let impulseScale = 0;
       if (useBias) {
         const C =
           this.angle0 +
-          relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+          relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
         const soft = ctx.jointSoftness;
         bias = soft.biasRate * C;
         massScale = soft.massScale;
         impulseScale = soft.impulseScale;
       }
       const impulse =
-        (-massScale * (state[sb + S_W] - state[sa + S_W] + bias)) / k - impulseScale * this.angularImpulse;
+        (-massScale * (state[sb + S.W] - state[sa + S.W] + bias)) / k - impulseScale * this.angularImpulse;
       this.angularImpulse += impulse;
-      state[sa + S_W] -= this.iA * impulse;
-      state[sb + S_W] += this.iB * impulse;
+      state[sa + S.W] -= this.iA * impulse;
+      state[sb + S.W] += this.iB * impulse;
     }
   }
 }

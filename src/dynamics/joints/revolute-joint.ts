@@ -1,10 +1,10 @@
 import { checkBoolean, checkFinite, checkNonNegative, FulcrumError } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import { makeSoftness, type Softness } from '../softness';
 import type { World } from '../world';
-import { H_LX, H_LY } from './hinge-batch';
+import { H } from './hinge-batch';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 import { relativeAngle, solve22, solved } from './joint-math';
@@ -187,14 +187,14 @@ export class RevoluteJoint extends Joint {
     this.motorImpulse = 0;
     this.lowerImpulse = 0;
     this.upperImpulse = 0;
-    data[base + H_LX] = this.linearX;
-    data[base + H_LY] = this.linearY;
+    data[base + H.LX] = this.linearX;
+    data[base + H.LY] = this.linearY;
   }
 
   /** @internal */
   override unpackHinge(data: Float64Array, base: number, ctx: JointContext): void {
-    this.linearX = data[base + H_LX];
-    this.linearY = data[base + H_LY];
+    this.linearX = data[base + H.LX];
+    this.linearY = data[base + H.LY];
     this.invH = ctx.invH;
   }
 
@@ -230,25 +230,25 @@ export class RevoluteJoint extends Joint {
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.updateAnchors(state);
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
     const axial = this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse;
     const px = this.linearX;
     const py = this.linearY;
-    state[sa + S_VX] -= this.mA * px;
-    state[sa + S_VY] -= this.mA * py;
-    state[sa + S_W] -= this.iA * (this.rAx * py - this.rAy * px + axial);
-    state[sb + S_VX] += this.mB * px;
-    state[sb + S_VY] += this.mB * py;
-    state[sb + S_W] += this.iB * (this.rBx * py - this.rBy * px + axial);
+    state[sa + S.VX] -= this.mA * px;
+    state[sa + S.VY] -= this.mA * py;
+    state[sa + S.W] -= this.iA * (this.rAx * py - this.rAy * px + axial);
+    state[sb + S.VX] += this.mB * px;
+    state[sb + S.VY] += this.mB * py;
+    state[sb + S.W] += this.iB * (this.rBx * py - this.rBy * px + axial);
   }
 
   /** Current joint angle from the angle at the step's start and the rotations since. */
   private currentAngle(state: Float64Array): number {
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
     return (
-      this.angle0 + relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS])
+      this.angle0 + relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS])
     );
   }
 
@@ -256,14 +256,14 @@ export class RevoluteJoint extends Joint {
   solve(ctx: JointContext, useBias: boolean): void {
     const state = ctx.state;
     const o = this.o;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
     const mA = this.mA;
     const iA = this.iA;
     const mB = this.mB;
     const iB = this.iB;
-    let wA = state[sa + S_W];
-    let wB = state[sb + S_W];
+    let wA = state[sa + S.W];
+    let wB = state[sb + S.W];
     const fixedRotation = iA + iB === 0;
 
     if (o.enableSpring && !fixedRotation) {
@@ -329,8 +329,8 @@ export class RevoluteJoint extends Joint {
 
     // point-to-point, unless the tree solver owns it
     if (this.inTree) {
-      state[sa + S_W] = wA;
-      state[sb + S_W] = wB;
+      state[sa + S.W] = wA;
+      state[sb + S.W] = wB;
       return;
     }
     this.updateAnchors(state);
@@ -338,10 +338,10 @@ export class RevoluteJoint extends Joint {
     const rAy = this.rAy;
     const rBx = this.rBx;
     const rBy = this.rBy;
-    let vAx = state[sa + S_VX];
-    let vAy = state[sa + S_VY];
-    let vBx = state[sb + S_VX];
-    let vBy = state[sb + S_VY];
+    let vAx = state[sa + S.VX];
+    let vAy = state[sa + S.VY];
+    let vBx = state[sb + S.VX];
+    let vBy = state[sb + S.VY];
     const cdotX = vBx - wB * rBy - vAx + wA * rAy;
     const cdotY = vBy + wB * rBx - vAy - wA * rAx;
     let biasX = 0;
@@ -372,8 +372,8 @@ export class RevoluteJoint extends Joint {
     this.linearX += px;
     this.linearY += py;
     if (this.closure) {
-      state[sa + S_W] = wA;
-      state[sb + S_W] = wB;
+      state[sa + S.W] = wA;
+      state[sb + S.W] = wB;
       const impulse = ctx.tree.closureImpulse;
       impulse[0] = px;
       impulse[1] = py;
@@ -386,11 +386,11 @@ export class RevoluteJoint extends Joint {
     vBx += mB * px;
     vBy += mB * py;
     wB += iB * (rBx * py - rBy * px);
-    state[sa + S_VX] = vAx;
-    state[sa + S_VY] = vAy;
-    state[sa + S_W] = wA;
-    state[sb + S_VX] = vBx;
-    state[sb + S_VY] = vBy;
-    state[sb + S_W] = wB;
+    state[sa + S.VX] = vAx;
+    state[sa + S.VY] = vAy;
+    state[sa + S.W] = wA;
+    state[sb + S.VX] = vBx;
+    state[sb + S.VY] = vBy;
+    state[sb + S.W] = wB;
   }
 }

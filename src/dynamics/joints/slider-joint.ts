@@ -1,7 +1,7 @@
 import { checkBoolean, checkFinite, checkNonNegative, FulcrumError } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import { makeSoftness, type Softness } from '../softness';
 import type { World } from '../world';
 import { Joint } from './joint';
@@ -112,9 +112,9 @@ export abstract class SliderJoint extends Joint {
   /** Current axis (turned with A), translation and the axial effective mass. */
   protected updateAxis(state: Float64Array): void {
     this.updateAnchors(state);
-    const sa = this.a * STATE_STRIDE;
-    const c = state[sa + S_DQC];
-    const s = state[sa + S_DQS];
+    const sa = this.a * S.STRIDE;
+    const c = state[sa + S.DQC];
+    const s = state[sa + S.DQS];
     this.ux = c * this.axis0x - s * this.axis0y;
     this.uy = s * this.axis0x + c * this.axis0y;
     const dx = this.sepX + this.rAx;
@@ -127,25 +127,25 @@ export abstract class SliderJoint extends Joint {
   }
 
   protected axialSpeed(state: Float64Array): number {
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
     return (
-      (state[sb + S_VX] - state[sa + S_VX]) * this.ux +
-      (state[sb + S_VY] - state[sa + S_VY]) * this.uy +
-      this.a2 * state[sb + S_W] -
-      this.a1 * state[sa + S_W]
+      (state[sb + S.VX] - state[sa + S.VX]) * this.ux +
+      (state[sb + S.VY] - state[sa + S.VY]) * this.uy +
+      this.a2 * state[sb + S.W] -
+      this.a1 * state[sa + S.W]
     );
   }
 
   protected applyAxial(state: Float64Array, impulse: number): void {
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    state[sa + S_VX] -= this.mA * impulse * this.ux;
-    state[sa + S_VY] -= this.mA * impulse * this.uy;
-    state[sa + S_W] -= this.iA * impulse * this.a1;
-    state[sb + S_VX] += this.mB * impulse * this.ux;
-    state[sb + S_VY] += this.mB * impulse * this.uy;
-    state[sb + S_W] += this.iB * impulse * this.a2;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
+    state[sa + S.VX] -= this.mA * impulse * this.ux;
+    state[sa + S.VY] -= this.mA * impulse * this.uy;
+    state[sa + S.W] -= this.iA * impulse * this.a1;
+    state[sb + S.VX] += this.mB * impulse * this.ux;
+    state[sb + S.VY] += this.mB * impulse * this.uy;
+    state[sb + S.W] += this.iB * impulse * this.a2;
   }
 
   /** Perpendicular impulse: P along perp = (-uy, ux), with its angular terms. */
@@ -156,14 +156,14 @@ export abstract class SliderJoint extends Joint {
     const dy = this.sepY + this.rAy;
     const s1 = dx * py - dy * px;
     const s2 = this.rBx * py - this.rBy * px;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
-    state[sa + S_VX] -= this.mA * impulse * px;
-    state[sa + S_VY] -= this.mA * impulse * py;
-    state[sa + S_W] -= this.iA * impulse * s1;
-    state[sb + S_VX] += this.mB * impulse * px;
-    state[sb + S_VY] += this.mB * impulse * py;
-    state[sb + S_W] += this.iB * impulse * s2;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
+    state[sa + S.VX] -= this.mA * impulse * px;
+    state[sa + S.VY] -= this.mA * impulse * py;
+    state[sa + S.W] -= this.iA * impulse * s1;
+    state[sb + S.VX] += this.mB * impulse * px;
+    state[sb + S.VY] += this.mB * impulse * py;
+    state[sb + S.W] += this.iB * impulse * s2;
   }
 
   /** @internal the rows along the axis (spring, limits, and the subclass's motor) */
@@ -263,13 +263,13 @@ export abstract class SliderJoint extends Joint {
     const s2 = this.rBx * py - this.rBy * px;
     const k = this.mA + this.mB + this.iA * s1 * s1 + this.iB * s2 * s2;
     if (k > 0) {
-      const sa = this.a * STATE_STRIDE;
-      const sb = this.b * STATE_STRIDE;
+      const sa = this.a * S.STRIDE;
+      const sb = this.b * S.STRIDE;
       const cdot =
-        (state[sb + S_VX] - state[sa + S_VX]) * px +
-        (state[sb + S_VY] - state[sa + S_VY]) * py +
-        s2 * state[sb + S_W] -
-        s1 * state[sa + S_W];
+        (state[sb + S.VX] - state[sa + S.VX]) * px +
+        (state[sb + S.VY] - state[sa + S.VY]) * py +
+        s2 * state[sb + S.W] -
+        s1 * state[sa + S.W];
       let bias = 0;
       let massScale = 1;
       let impulseScale = 0;

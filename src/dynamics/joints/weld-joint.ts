@@ -1,7 +1,7 @@
 import { checkNonNegative } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_DQC, S_DQS, S_VX, S_VY, S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import { makeSoftness, type Softness } from '../softness';
 import type { World } from '../world';
 import { Joint } from './joint';
@@ -119,30 +119,30 @@ export class WeldJoint extends Joint {
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.updateAnchors(state);
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
     const px = this.linearX;
     const py = this.linearY;
-    state[sa + S_VX] -= this.mA * px;
-    state[sa + S_VY] -= this.mA * py;
-    state[sa + S_W] -= this.iA * (this.rAx * py - this.rAy * px + this.angularImpulse);
-    state[sb + S_VX] += this.mB * px;
-    state[sb + S_VY] += this.mB * py;
-    state[sb + S_W] += this.iB * (this.rBx * py - this.rBy * px + this.angularImpulse);
+    state[sa + S.VX] -= this.mA * px;
+    state[sa + S.VY] -= this.mA * py;
+    state[sa + S.W] -= this.iA * (this.rAx * py - this.rAy * px + this.angularImpulse);
+    state[sb + S.VX] += this.mB * px;
+    state[sb + S.VY] += this.mB * py;
+    state[sb + S.W] += this.iB * (this.rBx * py - this.rBy * px + this.angularImpulse);
   }
 
   /** @internal */
   solve(ctx: JointContext, useBias: boolean): void {
     if (this.inTree) return;
     const state = ctx.state;
-    const sa = this.a * STATE_STRIDE;
-    const sb = this.b * STATE_STRIDE;
+    const sa = this.a * S.STRIDE;
+    const sb = this.b * S.STRIDE;
     const mA = this.mA;
     const iA = this.iA;
     const mB = this.mB;
     const iB = this.iB;
-    let wA = state[sa + S_W];
-    let wB = state[sb + S_W];
+    let wA = state[sa + S.W];
+    let wB = state[sb + S.W];
     // a soft weld keeps its spring in the relax pass too; a rigid one only corrects with bias
     const springy = this.o.angularHertz > 0;
     {
@@ -152,7 +152,7 @@ export class WeldJoint extends Joint {
       if (useBias || springy) {
         const C =
           this.angle0 +
-          relativeAngle(state[sa + S_DQC], state[sa + S_DQS], state[sb + S_DQC], state[sb + S_DQS]);
+          relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
         bias = this.angularSoft.biasRate * C;
         massScale = this.angularSoft.massScale;
         impulseScale = this.angularSoft.impulseScale;
@@ -167,10 +167,10 @@ export class WeldJoint extends Joint {
     const rAy = this.rAy;
     const rBx = this.rBx;
     const rBy = this.rBy;
-    let vAx = state[sa + S_VX];
-    let vAy = state[sa + S_VY];
-    let vBx = state[sb + S_VX];
-    let vBy = state[sb + S_VY];
+    let vAx = state[sa + S.VX];
+    let vAy = state[sa + S.VY];
+    let vBx = state[sb + S.VX];
+    let vBy = state[sb + S.VY];
     let biasX = 0;
     let biasY = 0;
     let massScale = 1;
@@ -195,11 +195,11 @@ export class WeldJoint extends Joint {
     vBx += mB * px;
     vBy += mB * py;
     wB += iB * (rBx * py - rBy * px);
-    state[sa + S_VX] = vAx;
-    state[sa + S_VY] = vAy;
-    state[sa + S_W] = wA;
-    state[sb + S_VX] = vBx;
-    state[sb + S_VY] = vBy;
-    state[sb + S_W] = wB;
+    state[sa + S.VX] = vAx;
+    state[sa + S.VY] = vAy;
+    state[sa + S.W] = wA;
+    state[sb + S.VX] = vBx;
+    state[sb + S.VY] = vBy;
+    state[sb + S.W] = wB;
   }
 }

@@ -1,7 +1,7 @@
 import { checkBoolean, checkFinite, checkNonNegative } from '../../core/errors';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
-import { S_W, STATE_STRIDE } from '../body-store';
+import { S } from '../body-store';
 import type { World } from '../world';
 import type { JointContext } from './joint-context';
 import { SliderJoint, type SliderOptions } from './slider-joint';
@@ -113,8 +113,8 @@ export class WheelJoint extends SliderJoint {
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.warmStartSlider(state);
-    state[this.a * STATE_STRIDE + S_W] -= this.iA * this.motorImpulse;
-    state[this.b * STATE_STRIDE + S_W] += this.iB * this.motorImpulse;
+    state[this.a * S.STRIDE + S.W] -= this.iA * this.motorImpulse;
+    state[this.b * S.STRIDE + S.W] += this.iB * this.motorImpulse;
   }
 
   /** @internal */
@@ -123,18 +123,18 @@ export class WheelJoint extends SliderJoint {
     const o = this.o;
     const k = this.iA + this.iB;
     if (o.enableMotor && k > 0) {
-      const sa = this.a * STATE_STRIDE;
-      const sb = this.b * STATE_STRIDE;
+      const sa = this.a * S.STRIDE;
+      const sb = this.b * S.STRIDE;
       const max = o.maxMotorTorque * ctx.h;
       const old = this.motorImpulse;
       const mass = this.treeAxialMass > 0 ? this.treeAxialMass : 1 / k;
       this.motorImpulse = Math.max(
         -max,
-        Math.min(old - mass * (state[sb + S_W] - state[sa + S_W] - o.motorSpeed), max),
+        Math.min(old - mass * (state[sb + S.W] - state[sa + S.W] - o.motorSpeed), max),
       );
       const impulse = this.motorImpulse - old;
-      state[sa + S_W] -= this.iA * impulse;
-      state[sb + S_W] += this.iB * impulse;
+      state[sa + S.W] -= this.iA * impulse;
+      state[sb + S.W] += this.iB * impulse;
     }
     this.solveSlider(ctx, useBias);
   }

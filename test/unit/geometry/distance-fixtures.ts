@@ -4,14 +4,11 @@
  * polygon), used as outside truth.
  */
 import {
-  CAPSULE,
   type Capsule,
-  CIRCLE,
   type Circle,
-  POLYGON,
   type Polygon,
-  SEGMENT,
   type Segment,
+  ShapeKind,
 } from '../../../src/geometry/types';
 import { makeRot } from '../../../src/math/rot';
 import type { Transform, Vec2 } from '../../../src/math/vec2';
@@ -32,15 +29,21 @@ export function xf(x: number, y: number, angle: number): Transform {
 }
 
 export function circle(x: number, y: number, radius: number): Circle {
-  return { type: 'circle', kind: CIRCLE, center: { x, y }, radius };
+  return { type: 'circle', kind: ShapeKind.CIRCLE, center: { x, y }, radius };
 }
 
 export function capsule(x1: number, y1: number, x2: number, y2: number, radius: number): Capsule {
-  return { type: 'capsule', kind: CAPSULE, center1: { x: x1, y: y1 }, center2: { x: x2, y: y2 }, radius };
+  return {
+    type: 'capsule',
+    kind: ShapeKind.CAPSULE,
+    center1: { x: x1, y: y1 },
+    center2: { x: x2, y: y2 },
+    radius,
+  };
 }
 
 export function segment(x1: number, y1: number, x2: number, y2: number): Segment {
-  return { type: 'segment', kind: SEGMENT, point1: { x: x1, y: y1 }, point2: { x: x2, y: y2 } };
+  return { type: 'segment', kind: ShapeKind.SEGMENT, point1: { x: x1, y: y1 }, point2: { x: x2, y: y2 } };
 }
 
 /** Convex polygon from CCW points (no three collinear). */
@@ -59,7 +62,7 @@ export function polygon(points: Vec2[], radius = 0): Polygon {
   }
   return {
     type: 'polygon',
-    kind: POLYGON,
+    kind: ShapeKind.POLYGON,
     count: n,
     vertices: points.map((p) => ({ x: p.x, y: p.y })),
     normals,
@@ -128,18 +131,18 @@ function polygonArea(p: Vec2[]): number {
 /** Core points of a shape in world coordinates (CCW for polygons). */
 export function worldCore(g: Circle | Capsule | Segment | Polygon, t: Transform): Vec2[] {
   const local =
-    g.kind === CIRCLE
+    g.kind === ShapeKind.CIRCLE
       ? [g.center]
-      : g.kind === CAPSULE
+      : g.kind === ShapeKind.CAPSULE
         ? [g.center1, g.center2]
-        : g.kind === SEGMENT
+        : g.kind === ShapeKind.SEGMENT
           ? [g.point1, g.point2]
           : g.vertices;
   return local.map((v) => ({ x: t.q.c * v.x - t.q.s * v.y + t.p.x, y: t.q.s * v.x + t.q.c * v.y + t.p.y }));
 }
 
 export function radiusOf(g: Circle | Capsule | Segment | Polygon): number {
-  return g.kind === SEGMENT ? 0 : g.radius;
+  return g.kind === ShapeKind.SEGMENT ? 0 : g.radius;
 }
 
 function pointSegment(p: Vec2, a: Vec2, b: Vec2): number {

@@ -2,9 +2,14 @@ import { describe, expect, it } from 'vitest';
 import { collideReach } from '../../../src/geometry/collide-reach';
 import { collide, collidePacked } from '../../../src/geometry/manifold';
 import { VERTEX_PAIR_MIN_GAP } from '../../../src/geometry/manifold-polygon';
-import { PACK_RECTANGLE, PACK_STRIDE, packGeometry } from '../../../src/geometry/packed';
+import { Pack, packGeometry } from '../../../src/geometry/packed';
 import { Shape } from '../../../src/geometry/shapes';
-import { type Geometry, type Manifold, makeManifold } from '../../../src/geometry/types';
+import {
+  type Geometry,
+  MAX_POLYGON_VERTICES,
+  type Manifold,
+  makeManifold,
+} from '../../../src/geometry/types';
 import type { Transform } from '../../../src/math/vec2';
 import { pointDistance, random, signedDistance, worldCore, xf } from './brute-force';
 
@@ -64,6 +69,19 @@ function placeNear(
 }
 
 describe('collide: basic contracts', () => {
+  it('a packed record holds the largest polygon (Pack.STRIDE is written as a number)', () => {
+    expect(Pack.STRIDE).toBe(Pack.VERTICES + Pack.VERTEX_STRIDE * MAX_POLYGON_VERTICES);
+    const ring = Array.from({ length: MAX_POLYGON_VERTICES }, (_, i) => ({
+      x: Math.cos((2 * Math.PI * i) / MAX_POLYGON_VERTICES),
+      y: Math.sin((2 * Math.PI * i) / MAX_POLYGON_VERTICES),
+    }));
+    const out = new Float64Array(2 * Pack.STRIDE).fill(7);
+    packGeometry(Shape.polygon(ring), out, 0);
+    expect(out[Pack.COUNT]).toBe(MAX_POLYGON_VERTICES);
+    // the next record is untouched
+    expect(Array.from(out.subarray(Pack.STRIDE))).toEqual(new Array(Pack.STRIDE).fill(7));
+  });
+
   it('circle-circle: separation = distance - r1 - r2 exactly, point halfway, unit normal A to B', () => {
     const a = Shape.circle(0.5);
     const b = Shape.circle(0.25, { x: 0.125, y: 0 });
@@ -324,26 +342,26 @@ describe('collide: random pairs against brute force', () => {
 });
 
 describe('collide: rectangles', () => {
-  const data = new Float64Array(2 * PACK_STRIDE);
+  const data = new Float64Array(2 * Pack.STRIDE);
 
   /** collidePacked on packed `a` and `b`; with `generic` the rectangle flags are cleared first. */
   function runPacked(a: Geometry, xfA: Transform, b: Geometry, xfB: Transform, generic: boolean): Manifold {
     packGeometry(a, data, 0);
-    packGeometry(b, data, PACK_STRIDE);
+    packGeometry(b, data, Pack.STRIDE);
     if (generic) {
-      data[PACK_RECTANGLE] = 0;
-      data[PACK_STRIDE + PACK_RECTANGLE] = 0;
+      data[Pack.RECTANGLE] = 0;
+      data[Pack.STRIDE + Pack.RECTANGLE] = 0;
     }
     const m = makeManifold();
     collideReach[0] = SPECULATIVE;
-    collidePacked(a.kind, b.kind, data, 0, xfA, PACK_STRIDE, xfB, m);
+    collidePacked(a.kind, b.kind, data, 0, xfA, Pack.STRIDE, xfB, m);
     return m;
   }
 
   it('boxes are packed as rectangles; parallelograms and other quads are not', () => {
     const flag = (g: Geometry) => {
       packGeometry(g, data, 0);
-      return data[PACK_RECTANGLE];
+      return data[Pack.RECTANGLE];
     };
     expect(flag(Shape.box(0.5, 0.2))).toBe(1);
     expect(flag(Shape.box(0.3, 0.7, { x: 0.4, y: -1 }, 0.7))).toBe(1);

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { FulcrumError } from '../../../src/core/errors';
 import { computeShapeBounds } from '../../../src/geometry/bounds';
 import { Shape } from '../../../src/geometry/shapes';
-import { CAPSULE, CIRCLE, POLYGON, type Polygon, SEGMENT } from '../../../src/geometry/types';
+import { type Polygon, ShapeKind } from '../../../src/geometry/types';
 import { makeBounds } from '../../../src/math/aabb';
 import { random, xf } from './brute-force';
 
@@ -97,7 +97,7 @@ describe('Shape.polygon hull', () => {
     ]);
     expect(g.centroid).toEqual({ x: 1, y: 1 });
     expect(g.type).toBe('polygon');
-    expect(g.kind).toBe(POLYGON);
+    expect(g.kind).toBe(ShapeKind.POLYGON);
     expect(Object.isFrozen(g) && Object.isFrozen(g.vertices) && Object.isFrozen(g.vertices[0])).toBe(true);
   });
 
@@ -128,13 +128,13 @@ describe('Shape.polygon hull', () => {
 describe('Shape factories', () => {
   it('build frozen geometry with type and kind', () => {
     const c = Shape.circle(0.5, { x: 1, y: 2 });
-    expect(c).toEqual({ type: 'circle', kind: CIRCLE, center: { x: 1, y: 2 }, radius: 0.5 });
+    expect(c).toEqual({ type: 'circle', kind: ShapeKind.CIRCLE, center: { x: 1, y: 2 }, radius: 0.5 });
     expect(Object.isFrozen(c) && Object.isFrozen(c.center)).toBe(true);
     expect(Shape.circle(1).center).toEqual({ x: 0, y: 0 });
     const cap = Shape.capsule({ x: -1, y: 0 }, { x: 1, y: 0 }, 0.25);
-    expect([cap.type, cap.kind, cap.radius]).toEqual(['capsule', CAPSULE, 0.25]);
+    expect([cap.type, cap.kind, cap.radius]).toEqual(['capsule', ShapeKind.CAPSULE, 0.25]);
     const seg = Shape.segment({ x: -1, y: 0 }, { x: 1, y: 0 });
-    expect([seg.type, seg.kind]).toEqual(['segment', SEGMENT]);
+    expect([seg.type, seg.kind]).toEqual(['segment', ShapeKind.SEGMENT]);
     expect(Object.isFrozen(seg.point1)).toBe(true);
   });
 
