@@ -1,5 +1,6 @@
 /** The engines the benchmark knows, how to load each adapter, and which npm package it measures. */
 import type { EngineAdapter } from './adapter';
+import { importBundledFulcrum } from './bundle';
 
 export interface EngineEntry {
   id: string;
@@ -14,7 +15,7 @@ export const engines: EngineEntry[] = [
     id: 'fulcrum',
     label: 'Fulcrum',
     pkg: null,
-    load: async () => new (await import('./adapters/fulcrum')).FulcrumAdapter(),
+    load: async () => new (await importBundledFulcrum()).FulcrumAdapter(),
   },
   {
     id: 'box2d3',

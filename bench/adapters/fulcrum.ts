@@ -1,13 +1,14 @@
 /**
  * Fulcrum through its public API. Settings: Fulcrum's defaults (4 substeps, continuous collision on),
  * sleeping off. Units are already metres, kilograms, seconds, radians, y up: nothing to map.
+ * The benchmark loads this file bundled with the engine, as the package ships (bench/bundle.ts).
  */
 import { buildFulcrumWorld, type FulcrumScene } from '../../scenes/build-fulcrum';
 import type { Scene } from '../../scenes/types';
 import type { EngineAdapter } from '../adapter';
 
 export class FulcrumAdapter implements EngineAdapter {
-  readonly settings = 'defaults (subSteps 4, continuous on), enableSleep false';
+  readonly settings = 'defaults (subSteps 4, continuous on), enableSleep false, bundled by esbuild';
   private built: FulcrumScene | null = null;
 
   async init(): Promise<void> {}

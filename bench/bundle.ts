@@ -1,0 +1,37 @@
+/**
+ * Fulcrum as its users get it: the benchmark adapter and the engine bundled by esbuild, as tsup
+ * bundles dist/. The engine keeps its typed-array layouts in enums, which a bundler writes into the
+ * code as numbers; tsx compiles file by file and leaves an enum imported from another file as a
+ * property load at every use (see src/dynamics/body-store.ts).
+ *
+ * esbuild runs as a command, not through its JavaScript API: importing that API into a process
+ * under tsx made the engine's steps in it about 20 % slower (pyramid 1.30 -> 1.58 ms).
+ */
+import { execFileSync } from 'node:child_process';
+import { rmSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+
+const adapterPath = fileURLToPath(new URL('./adapters/fulcrum.ts', import.meta.url));
+const esbuild = createRequire(import.meta.url).resolve('esbuild/bin/esbuild');
+
+/** Bundles the adapter, imports the bundle and removes the file. */
+export async function importBundledFulcrum(): Promise<typeof import('./adapters/fulcrum')> {
+  const outfile = join(tmpdir(), `fulcrum-bench-${process.pid}.mjs`);
+  execFileSync(esbuild, [
+    adapterPath,
+    '--bundle',
+    '--format=esm',
+    '--platform=node',
+    '--target=es2022',
+    `--outfile=${outfile}`,
+    '--log-level=error',
+  ]);
+  try {
+    return await import(pathToFileURL(outfile).href);
+  } finally {
+    rmSync(outfile, { force: true });
+  }
+}
