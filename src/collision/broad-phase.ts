@@ -49,6 +49,9 @@ export interface BoxColumns {
  * `updatePairs`. Pair rules: dynamic proxies pair with every type; static and kinematic proxies pair
  * only with dynamic ones. Each tree proxy's user data is the shape id.
  */
+/** the box `query` hands to `queryBox` */
+const queryScratch = new Float64Array(4);
+
 export class BroadPhase {
   private readonly trees: DynamicTree[] = [new DynamicTree(), new DynamicTree(), new DynamicTree()];
   /** Per tree: index of each proxy in `moveBuffer`, or -1. Sized to the tree's capacity. */
@@ -159,16 +162,12 @@ export class BroadPhase {
       const type = key & 3;
       const id = key >> 2;
       const tree = this.trees[type];
-      const minX = tree.getMinX(id);
-      const minY = tree.getMinY(id);
-      const maxX = tree.getMaxX(id);
-      const maxY = tree.getMaxY(id);
       const shapeId = tree.getUserData(id);
       if (type === ProxyType.DYNAMIC) {
-        this.findPairs(key, shapeId, minX, minY, maxX, maxY, ProxyType.STATIC, existing, out);
-        this.findPairs(key, shapeId, minX, minY, maxX, maxY, ProxyType.KINEMATIC, existing, out);
+        this.findPairs(key, shapeId, tree.box, 4 * id, ProxyType.STATIC, existing, out);
+        this.findPairs(key, shapeId, tree.box, 4 * id, ProxyType.KINEMATIC, existing, out);
       }
-      this.findPairs(key, shapeId, minX, minY, maxX, maxY, ProxyType.DYNAMIC, existing, out);
+      this.findPairs(key, shapeId, tree.box, 4 * id, ProxyType.DYNAMIC, existing, out);
     }
     for (let i = 0; i < buffer.length; i++) {
       const key = buffer.data[i];
@@ -180,12 +179,22 @@ export class BroadPhase {
 
   /** Appends the shape ids of proxies overlapping the box, from trees whose bit (1 << type) is in typeMask. */
   query(minX: number, minY: number, maxX: number, maxY: number, typeMask: number, out: IntList): void {
+    const q = queryScratch;
+    q[0] = minX;
+    q[1] = minY;
+    q[2] = maxX;
+    q[3] = maxY;
+    this.queryBox(q, 0, typeMask, out);
+  }
+
+  /** As query, for the box at `at` in `boxes` (see DynamicTree.queryBox). */
+  queryBox(boxes: Float64Array, at: number, typeMask: number, out: IntList): void {
     const found = this.found;
     for (let type = 0; type < 3; type++) {
       if ((typeMask & (1 << type)) === 0) continue;
       const tree = this.trees[type];
       found.clear();
-      tree.query(minX, minY, maxX, maxY, found);
+      tree.queryBox(boxes, at, found);
       for (let i = 0; i < found.length; i++) out.push(tree.getUserData(found.data[i]));
     }
   }
@@ -241,10 +250,8 @@ export class BroadPhase {
   private findPairs(
     key: number,
     shapeId: number,
-    minX: number,
-    minY: number,
-    maxX: number,
-    maxY: number,
+    boxes: Float64Array,
+    at: number,
     type: number,
     existing: PairSet,
     out: IntList,
@@ -253,7 +260,7 @@ export class BroadPhase {
     const tree = this.trees[type];
     const moved = this.moveIndex[type];
     found.clear();
-    tree.query(minX, minY, maxX, maxY, found);
+    tree.queryBox(boxes, at, found);
     for (let i = 0; i < found.length; i++) {
       const id = found.data[i];
       const otherKey = (id << 2) | type;

@@ -31,33 +31,36 @@ const STATIC_TREE_MASK = 1;
 /** static, kinematic and dynamic trees */
 const ALL_TREES_MASK = 7;
 
+/**
+ * The start of the step of the body handed to solveContinuous or deferBullet: centre x, y and
+ * rotation cos, sin. Written by the caller (doubles passed to a call that V8 does not inline are put
+ * on the heap).
+ */
+export const sweepStart = new Float64Array(4);
+
 /** Fast bullets of the current step waiting for solveBullets: slot, and start centre and rotation. */
 let bulletCount = 0;
 let bulletSlots = new Int32Array(16);
 let bulletStarts = new Float64Array(16 * 4);
+/** the swept box of a shape, as minX, minY, maxX, maxY */
+const sweptBox = new Float64Array(4);
 
 /**
  * Continuous collision of one fast body against static shapes: the body's motion over the step
- * (centre from (c1x, c1y) to its current centre, rotation from (q1c, q1s) to its current rotation)
- * is swept against every static shape its swept box touches, and the body is moved back to the
- * earliest time of impact. Its velocity is kept; next step's speculative contact stops it there.
+ * (centre and rotation from `sweepStart` to its current ones) is swept against every static shape its
+ * swept box touches, and the body is moved back to the earliest time of impact. Its velocity is kept;
+ * next step's speculative contact stops it there.
  */
-export function solveContinuous(
-  core: WorldCore,
-  b: number,
-  c1x: number,
-  c1y: number,
-  q1c: number,
-  q1s: number,
-): void {
-  sweepAgainst(core, b, c1x, c1y, q1c, q1s, STATIC_TREE_MASK);
+export function solveContinuous(core: WorldCore, b: number): void {
+  sweepAgainst(core, b, sweepStart, 0, STATIC_TREE_MASK);
 }
 
 /**
- * Records a fast bullet whose continuous collision must wait until every other awake body has its
- * final transform; `solveBullets` handles it and moves its proxies. Allocation free once warmed up.
+ * Records a fast bullet (starting at `sweepStart`) whose continuous collision must wait until every
+ * other awake body has its final transform; `solveBullets` handles it and moves its proxies.
+ * Allocation free once warmed up.
  */
-export function deferBullet(b: number, c1x: number, c1y: number, q1c: number, q1s: number): void {
+export function deferBullet(b: number): void {
   if (bulletCount === bulletSlots.length) {
     const slots = new Int32Array(2 * bulletCount);
     slots.set(bulletSlots);
@@ -68,10 +71,7 @@ export function deferBullet(b: number, c1x: number, c1y: number, q1c: number, q1
   }
   const i = bulletCount++;
   bulletSlots[i] = b;
-  bulletStarts[4 * i] = c1x;
-  bulletStarts[4 * i + 1] = c1y;
-  bulletStarts[4 * i + 2] = q1c;
-  bulletStarts[4 * i + 3] = q1s;
+  bulletStarts.set(sweepStart, 4 * i);
 }
 
 /**
@@ -87,15 +87,7 @@ export function solveBullets(core: WorldCore): void {
   for (let i = 0; i < bulletCount; i++) {
     const b = bulletSlots[i];
     const k = 4 * i;
-    sweepAgainst(
-      core,
-      b,
-      bulletStarts[k],
-      bulletStarts[k + 1],
-      bulletStarts[k + 2],
-      bulletStarts[k + 3],
-      ALL_TREES_MASK,
-    );
+    sweepAgainst(core, b, bulletStarts, k, ALL_TREES_MASK);
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
       broad.moveProxy(shapes.proxyKey[s], shapes, s);
     }
@@ -103,26 +95,19 @@ export function solveBullets(core: WorldCore): void {
   bulletCount = 0;
 }
 
-function sweepAgainst(
-  core: WorldCore,
-  b: number,
-  c1x: number,
-  c1y: number,
-  q1c: number,
-  q1s: number,
-  treeMask: number,
-): void {
+/** Sweeps body `b` from the start pose at `at` in `starts` (see sweepStart) against the trees of `treeMask`. */
+function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: number, treeMask: number): void {
   const bodies = core.bodies;
   const shapes = core.shapes;
   const sweep = input.sweepB;
   sweep.localCenterX = bodies.lcx[b];
   sweep.localCenterY = bodies.lcy[b];
-  sweep.c1X = c1x;
-  sweep.c1Y = c1y;
+  sweep.c1X = starts[at];
+  sweep.c1Y = starts[at + 1];
   sweep.c2X = bodies.cx[b];
   sweep.c2Y = bodies.cy[b];
-  sweep.q1C = q1c;
-  sweep.q1S = q1s;
+  sweep.q1C = starts[at + 2];
+  sweep.q1S = starts[at + 3];
   sweep.q2C = bodies.qc[b];
   sweep.q2S = bodies.qs[b];
   getSweepTransform(sweep, 0, start);
@@ -133,12 +118,12 @@ function sweepAgainst(
     const g = shapes.geometry[s]!;
     // swept box: the shape's box at the start of the step united with its box now
     packedBounds(shapes.packed, s * Pack.STRIDE, start, bounds);
-    const minX = Math.min(bounds.minX, shapes.minX[s]);
-    const minY = Math.min(bounds.minY, shapes.minY[s]);
-    const maxX = Math.max(bounds.maxX, shapes.maxX[s]);
-    const maxY = Math.max(bounds.maxY, shapes.maxY[s]);
+    sweptBox[0] = Math.min(bounds.minX, shapes.minX[s]);
+    sweptBox[1] = Math.min(bounds.minY, shapes.minY[s]);
+    sweptBox[2] = Math.max(bounds.maxX, shapes.maxX[s]);
+    sweptBox[3] = Math.max(bounds.maxY, shapes.maxY[s]);
     candidates.clear();
-    core.broadPhase.query(minX, minY, maxX, maxY, treeMask, candidates);
+    core.broadPhase.queryBox(sweptBox, 0, treeMask, candidates);
     if (candidates.length === 0) continue;
     makeProxy(g, shapeProxy);
     let discReady = false;

@@ -17,7 +17,7 @@ import {
   warmStartContacts,
 } from './contact-solver';
 import { ContactFlag, type ContactStore } from './contact-store';
-import { deferBullet, solveBullets, solveContinuous } from './continuous';
+import { deferBullet, solveBullets, solveContinuous, sweepStart } from './continuous';
 import type { GraphColoring } from './graph-color';
 import { ShapeFlag } from './shape-store';
 import { makeSoftness, type Softness } from './softness';
@@ -327,12 +327,16 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
       bodies.kind[b] === BodyKind.DYNAMIC &&
       (Math.sqrt(vx * vx + vy * vy) + bodies.maxExtent[b] * Math.abs(w)) * dt > 0.5 * bodies.minExtent[b]
     ) {
+      sweepStart[0] = c0x;
+      sweepStart[1] = c0y;
+      sweepStart[2] = q0c;
+      sweepStart[3] = q0s;
       if ((bodies.flags[b] & BodyFlag.BULLET) !== 0) {
         // bullets also sweep against moving bodies, once those are final: see solveBullets
-        deferBullet(b, c0x, c0y, q0c, q0s);
+        deferBullet(b);
         continue;
       }
-      solveContinuous(core, b, c0x, c0y, q0c, q0s);
+      solveContinuous(core, b);
     }
     for (let sh = bodies.shapeHead[b]; sh !== -1; sh = shapes.next[sh]) {
       broad.moveProxy(shapes.proxyKey[sh], shapes, sh);
