@@ -7,12 +7,17 @@ export interface TreeRayCastVisitor {
   rayCastProxy(proxyId: number, userData: number, maxFraction: number): number;
 }
 
-const NULL = -1;
+/** Node ids: NULL is no node. An enum, not a const, for the reason in dynamics/body-store.ts. */
+enum Node {
+  NULL = -1,
+}
 /**
  * Largest allowed height difference between two siblings. 2 rather than 1 (AVL) leaves the perimeter
  * heuristic room to keep nearby boxes together; the height stays below about 1.8·log2(n).
  */
-const SLACK = 2;
+enum Balance {
+  SLACK = 2,
+}
 
 /**
  * Dynamic AABB tree. Nodes live in typed arrays (structure of arrays) indexed by node id; a proxy id is
@@ -38,8 +43,8 @@ export class DynamicTree {
   /** 0 for a leaf, -1 for a free node. */
   private height: Int32Array;
   private userData: Int32Array;
-  private root = NULL;
-  private freeList = NULL;
+  private root = Node.NULL;
+  private freeList = Node.NULL;
   private nodeCount = 0;
   private leafCount = 0;
   private queryStack: Int32Array = new Int32Array(64);
@@ -130,12 +135,12 @@ export class DynamicTree {
 
   /** Height of the root (0 for a single leaf, -1 when empty). */
   getHeight(): number {
-    return this.root === NULL ? -1 : this.height[this.root];
+    return this.root === Node.NULL ? -1 : this.height[this.root];
   }
 
   /** Sum of the perimeters of the internal nodes divided by the root's perimeter: lower is better. */
   getAreaRatio(): number {
-    if (this.root === NULL) return 0;
+    if (this.root === Node.NULL) return 0;
     const rootPerimeter = this.perimeter(this.root);
     if (rootPerimeter === 0) return 0;
     let total = 0;
@@ -160,7 +165,7 @@ export class DynamicTree {
    * boxes so, as V8 puts on the heap every double passed to a call it does not inline.
    */
   queryBox(boxes: Float64Array, at: number, out: IntList): void {
-    if (this.root === NULL) return;
+    if (this.root === Node.NULL) return;
     const minX = boxes[at];
     const minY = boxes[at + 1];
     const maxX = boxes[at + 2];
@@ -177,7 +182,7 @@ export class DynamicTree {
       const o = 4 * id;
       if (box[o] > maxX || box[o + 1] > maxY || box[o + 2] < minX || box[o + 3] < minY) continue;
       const c1 = child1[id];
-      if (c1 === NULL) {
+      if (c1 === Node.NULL) {
         out.push(id);
       } else {
         stack[sp++] = c1;
@@ -199,7 +204,7 @@ export class DynamicTree {
     maxFraction: number,
     visitor: TreeRayCastVisitor,
   ): number {
-    if (this.root === NULL) return maxFraction;
+    if (this.root === Node.NULL) return maxFraction;
     const stack = this.stackFor(this.rayStack);
     this.rayStack = stack;
     // Separating axis perpendicular to the segment: |n·(origin - center)| > |n|·halfExtents culls a box.
@@ -230,7 +235,7 @@ export class DynamicTree {
         0.5 * (absNx * (maxX - minX) + absNy * (maxY - minY));
       if (separation > 0) continue;
       const c1 = child1[id];
-      if (c1 !== NULL) {
+      if (c1 !== Node.NULL) {
         stack[sp++] = c1;
         stack[sp++] = this.child2[id];
         continue;
@@ -265,15 +270,15 @@ export class DynamicTree {
       else if (h > 0) this.release(i);
     }
     this.root = this.build(0, n);
-    this.parent[this.root] = NULL;
+    this.parent[this.root] = Node.NULL;
   }
 
   /** Throws if the structure is inconsistent; for tests. */
   validate(): void {
     let leaves = 0;
     let internal = 0;
-    if (this.root !== NULL) {
-      if (this.parent[this.root] !== NULL) throw new Error('tree: root has a parent');
+    if (this.root !== Node.NULL) {
+      if (this.parent[this.root] !== Node.NULL) throw new Error('tree: root has a parent');
       const stack = new Int32Array(this.height[this.root] + 2);
       let sp = 0;
       stack[sp++] = this.root;
@@ -286,8 +291,8 @@ export class DynamicTree {
         if (!(this.box[o] <= this.box[o + 2] && this.box[o + 1] <= this.box[o + 3])) {
           throw new Error(`tree: node ${id} has an inverted box`);
         }
-        if (c1 === NULL) {
-          if (h !== 0 || c2 !== NULL) throw new Error(`tree: leaf ${id} has height ${h} or a child`);
+        if (c1 === Node.NULL) {
+          if (h !== 0 || c2 !== Node.NULL) throw new Error(`tree: leaf ${id} has height ${h} or a child`);
           leaves++;
           continue;
         }
@@ -296,7 +301,8 @@ export class DynamicTree {
         const h1 = this.height[c1];
         const h2 = this.height[c2];
         if (h !== 1 + Math.max(h1, h2)) throw new Error(`tree: node ${id} has wrong height ${h}`);
-        if (Math.abs(h1 - h2) > SLACK) throw new Error(`tree: node ${id} is unbalanced (${h1}, ${h2})`);
+        if (Math.abs(h1 - h2) > Balance.SLACK)
+          throw new Error(`tree: node ${id} is unbalanced (${h1}, ${h2})`);
         if (!this.contains(id, c1) || !this.contains(id, c2)) {
           throw new Error(`tree: node ${id} does not contain its children`);
         }
@@ -308,7 +314,7 @@ export class DynamicTree {
       throw new Error(`tree: ${leaves} leaves reachable, ${this.leafCount} expected`);
     if (leaves + internal !== this.nodeCount) throw new Error('tree: unreachable nodes');
     let free = 0;
-    for (let i = this.freeList; i !== NULL; i = this.parent[i]) {
+    for (let i = this.freeList; i !== Node.NULL; i = this.parent[i]) {
       if (this.height[i] !== -1) throw new Error(`tree: free node ${i} is in use`);
       if (++free > this.parent.length) throw new Error('tree: free list has a cycle');
     }
@@ -351,12 +357,12 @@ export class DynamicTree {
   }
 
   private allocate(): number {
-    if (this.freeList === NULL) this.grow();
+    if (this.freeList === Node.NULL) this.grow();
     const id = this.freeList;
     this.freeList = this.parent[id];
-    this.parent[id] = NULL;
-    this.child1[id] = NULL;
-    this.child2[id] = NULL;
+    this.parent[id] = Node.NULL;
+    this.child1[id] = Node.NULL;
+    this.child2[id] = Node.NULL;
     this.height[id] = 0;
     this.userData[id] = -1;
     this.nodeCount++;
@@ -387,16 +393,16 @@ export class DynamicTree {
   /** Puts nodes [from, to) on the free list, lowest id first; the free list must be empty. */
   private linkFree(from: number, to: number): void {
     for (let i = from; i < to; i++) {
-      this.parent[i] = i + 1 < to ? i + 1 : NULL;
+      this.parent[i] = i + 1 < to ? i + 1 : Node.NULL;
       this.height[i] = -1;
     }
     this.freeList = from;
   }
 
   private insertLeaf(leaf: number): void {
-    if (this.root === NULL) {
+    if (this.root === Node.NULL) {
       this.root = leaf;
-      this.parent[leaf] = NULL;
+      this.parent[leaf] = Node.NULL;
       return;
     }
     const sibling = this.findBestSibling(leaf);
@@ -415,7 +421,7 @@ export class DynamicTree {
 
   private removeLeaf(leaf: number): void {
     if (leaf === this.root) {
-      this.root = NULL;
+      this.root = Node.NULL;
       return;
     }
     const node = this.parent[leaf];
@@ -429,7 +435,7 @@ export class DynamicTree {
 
   /** Makes `next` take the place of `prev` under `parent` (or as the root when `parent` is NULL). */
   private replaceChild(parent: number, prev: number, next: number): void {
-    if (parent === NULL) this.root = next;
+    if (parent === Node.NULL) this.root = next;
     else if (this.child1[parent] === prev) this.child1[parent] = next;
     else this.child2[parent] = next;
   }
@@ -449,7 +455,7 @@ export class DynamicTree {
     const leafCost = maxX - minX + (maxY - minY);
     let index = this.root;
     let inherited = 0;
-    while (this.child1[index] !== NULL) {
+    while (this.child1[index] !== Node.NULL) {
       const combined = this.unionPerimeter(index, minX, minY, maxX, maxY);
       const here = combined + inherited;
       const below = inherited + combined - this.perimeter(index);
@@ -473,7 +479,7 @@ export class DynamicTree {
     leafCost: number,
   ): number {
     const combined = this.unionPerimeter(id, minX, minY, maxX, maxY);
-    return this.child1[id] === NULL ? combined : combined - this.perimeter(id) + leafCost;
+    return this.child1[id] === Node.NULL ? combined : combined - this.perimeter(id) + leafCost;
   }
 
   private unionPerimeter(id: number, minX: number, minY: number, maxX: number, maxY: number): number {
@@ -493,7 +499,7 @@ export class DynamicTree {
    */
   private refitUp(index: number): void {
     const box = this.box;
-    while (index !== NULL) {
+    while (index !== Node.NULL) {
       const o = 4 * index;
       const minX = box[o];
       const minY = box[o + 1];
@@ -524,8 +530,8 @@ export class DynamicTree {
     const b = this.child1[node];
     const c = this.child2[node];
     const diff = this.height[c] - this.height[b];
-    if (diff > SLACK) this.lift(node, b, c);
-    else if (diff < -SLACK) this.lift(node, c, b);
+    if (diff > Balance.SLACK) this.lift(node, b, c);
+    else if (diff < -Balance.SLACK) this.lift(node, c, b);
     else this.improve(node, b, c);
     this.refit(node);
   }
@@ -539,14 +545,14 @@ export class DynamicTree {
   private lift(node: number, light: number, heavy: number): void {
     const f = this.child1[heavy];
     const g = this.child2[heavy];
-    let up = NULL;
+    let up = Node.NULL;
     let best = Number.POSITIVE_INFINITY;
     if (this.swapKeepsBalance(light, f, g)) {
       up = f;
       best = this.pairPerimeter(light, g);
     }
     if (this.swapKeepsBalance(light, g, f) && this.pairPerimeter(light, f) < best) up = g;
-    if (up !== NULL) {
+    if (up !== Node.NULL) {
       this.swap(node, light, heavy, up);
       this.refit(heavy);
       return;
@@ -558,14 +564,14 @@ export class DynamicTree {
   /** Applies the grandchild swap of `node` that most reduces the perimeter of the child it changes. */
   private improve(node: number, b: number, c: number): void {
     let bestGain = 0;
-    let down = NULL;
-    let under = NULL;
-    let up = NULL;
+    let down = Node.NULL;
+    let under = Node.NULL;
+    let up = Node.NULL;
     for (let side = 0; side < 2; side++) {
       const u = side === 0 ? b : c;
       const v = side === 0 ? c : b;
       const f = this.child1[v];
-      if (f === NULL) continue;
+      if (f === Node.NULL) continue;
       const g = this.child2[v];
       const perimeter = this.perimeter(v);
       for (let k = 0; k < 2; k++) {
@@ -580,7 +586,7 @@ export class DynamicTree {
         }
       }
     }
-    if (up === NULL) return;
+    if (up === Node.NULL) return;
     this.swap(node, down, under, up);
     this.refit(under);
   }
@@ -589,7 +595,7 @@ export class DynamicTree {
   private swapKeepsBalance(u: number, x: number, y: number): boolean {
     const h = this.height;
     const pairHeight = 1 + Math.max(h[u], h[y]);
-    return Math.abs(h[u] - h[y]) <= SLACK && Math.abs(h[x] - pairHeight) <= SLACK;
+    return Math.abs(h[u] - h[y]) <= Balance.SLACK && Math.abs(h[x] - pairHeight) <= Balance.SLACK;
   }
 
   /** Exchanges `down`, a child of `node`, with `up`, a child of `under` (the other child of `node`). */

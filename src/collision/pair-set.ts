@@ -1,6 +1,9 @@
 import { FulcrumError } from '../core/errors';
 
-const EMPTY = -1;
+/** An enum, not a const, for the reason in dynamics/body-store.ts. */
+enum Slot {
+  EMPTY = -1,
+}
 
 /**
  * Hash map from an unordered pair of non-negative int32 ids to an int32 value (a contact index).
@@ -18,7 +21,7 @@ export class PairSet {
   constructor(expectedSize = 16) {
     let capacity = 16;
     while (capacity < expectedSize * 2) capacity *= 2;
-    this.keysLo = new Int32Array(capacity).fill(EMPTY);
+    this.keysLo = new Int32Array(capacity).fill(Slot.EMPTY);
     this.keysHi = new Int32Array(capacity);
     this.values = new Int32Array(capacity);
     this.mask = capacity - 1;
@@ -37,7 +40,7 @@ export class PairSet {
     let i = hashPair(lo, hi) & mask;
     for (;;) {
       const k = keysLo[i];
-      if (k === EMPTY) return -1;
+      if (k === Slot.EMPTY) return -1;
       if (k === lo && this.keysHi[i] === hi) return this.values[i];
       i = (i + 1) & mask;
     }
@@ -58,7 +61,7 @@ export class PairSet {
     let i = hashPair(lo, hi) & mask;
     for (;;) {
       const k = keysLo[i];
-      if (k === EMPTY) {
+      if (k === Slot.EMPTY) {
         keysLo[i] = lo;
         this.keysHi[i] = hi;
         this.values[i] = value;
@@ -84,7 +87,7 @@ export class PairSet {
     let i = hashPair(lo, hi) & mask;
     for (;;) {
       const k = keysLo[i];
-      if (k === EMPTY) return false;
+      if (k === Slot.EMPTY) return false;
       if (k === lo && keysHi[i] === hi) break;
       i = (i + 1) & mask;
     }
@@ -94,7 +97,7 @@ export class PairSet {
     for (;;) {
       j = (j + 1) & mask;
       const kl = keysLo[j];
-      if (kl === EMPTY) break;
+      if (kl === Slot.EMPTY) break;
       const home = hashPair(kl, keysHi[j]) & mask;
       if (((j - home) & mask) >= ((j - i) & mask)) {
         keysLo[i] = kl;
@@ -103,14 +106,14 @@ export class PairSet {
         i = j;
       }
     }
-    keysLo[i] = EMPTY;
+    keysLo[i] = Slot.EMPTY;
     this.count--;
     return true;
   }
 
   clear(): void {
     if (this.count === 0) return;
-    this.keysLo.fill(EMPTY);
+    this.keysLo.fill(Slot.EMPTY);
     this.count = 0;
   }
 
@@ -118,16 +121,16 @@ export class PairSet {
     const oldLo = this.keysLo;
     const oldHi = this.keysHi;
     const oldValues = this.values;
-    const keysLo = new Int32Array(capacity).fill(EMPTY);
+    const keysLo = new Int32Array(capacity).fill(Slot.EMPTY);
     const keysHi = new Int32Array(capacity);
     const values = new Int32Array(capacity);
     const mask = capacity - 1;
     for (let s = 0; s < oldLo.length; s++) {
       const lo = oldLo[s];
-      if (lo === EMPTY) continue;
+      if (lo === Slot.EMPTY) continue;
       const hi = oldHi[s];
       let i = hashPair(lo, hi) & mask;
-      while (keysLo[i] !== EMPTY) i = (i + 1) & mask;
+      while (keysLo[i] !== Slot.EMPTY) i = (i + 1) & mask;
       keysLo[i] = lo;
       keysHi[i] = hi;
       values[i] = oldValues[s];

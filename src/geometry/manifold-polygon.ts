@@ -43,8 +43,11 @@ function makeWorkPolygon(): WorkPolygon {
 const polyA = makeWorkPolygon();
 const polyB = makeWorkPolygon();
 const closest = makeSegmentClosest();
-const VERTEX_PAIR_BIT = 1 << 9;
-const B_REFERENCE_BIT = 1 << 8;
+/** Feature id bits. Enums, not consts, for the reason in dynamics/body-store.ts. */
+enum IdBit {
+  B_REFERENCE = 1 << 8,
+  VERTEX_PAIR = 1 << 9,
+}
 
 /**
  * Which polygon owned the reference face of this pair's previous manifold (0 = A, 1 = B, -1 = none).
@@ -72,7 +75,7 @@ export function clearCollideHints(): void {
 
 /** The owner bit of a polygon contact id: 1 when B owned the reference face. */
 export function referenceOwnerOfId(id: number): number {
-  return (id & B_REFERENCE_BIT) !== 0 ? 1 : 0;
+  return (id & IdBit.B_REFERENCE) !== 0 ? 1 : 0;
 }
 /**
  * How much more than the face separation the cores' true distance must be before separated cores get
@@ -89,7 +92,10 @@ export const VERTEX_PAIR_MIN_GAP = 0.1 * LINEAR_SLOP;
  */
 let axisHint = 0;
 let separatingAxis = 0;
-const B_AXIS = 8;
+enum Axis {
+  /** added to B's face index in `separatingAxis` */
+  B = 8,
+}
 
 /** Sets the separating axis of the pair's previous collide call (0 = none) and clears the result. */
 export function setSeparatingAxisHint(axis: number): void {
@@ -223,13 +229,15 @@ function maxSeparation(p: WorkPolygon, q: WorkPolygon): number {
  * its core separation and id.
  */
 const local = new Float64Array(2 + 3 * 2);
-const L_NX = 0;
-const L_NY = 1;
-const L_POINTS = 2;
+enum L {
+  NX = 0,
+  NY = 1,
+  POINTS = 2,
+}
 const localIds = new Int32Array(2);
 
 function setLocalPoint(index: number, x: number, y: number, coreSeparation: number, id: number): void {
-  const k = L_POINTS + 3 * index;
+  const k = L.POINTS + 3 * index;
   local[k] = x;
   local[k + 1] = y;
   local[k + 2] = coreSeparation;
@@ -251,7 +259,7 @@ function collideLoaded(): number {
   const limit = speculativeDistance + polyA.radius + polyB.radius;
   if (axisHint !== 0) {
     const edge = (axisHint - 1) & 7;
-    const ofB = axisHint > B_AXIS;
+    const ofB = axisHint > Axis.B;
     const p = ofB ? polyB : polyA;
     if (edge < p.count) {
       edgeSeparation(p, edge, ofB ? polyA : polyB);
@@ -270,7 +278,7 @@ function collideLoaded(): number {
   const edgeB = maxSeparation(polyB, polyA);
   const separationB = separationOut[0];
   if (separationB >= limit) {
-    separatingAxis = B_AXIS + edgeB + 1;
+    separatingAxis = Axis.B + edgeB + 1;
     return 0;
   }
 
@@ -280,7 +288,7 @@ function collideLoaded(): number {
   const inc = flip ? polyA : polyB;
   const refEdge = flip ? edgeB : edgeA;
   const separation = flip ? separationB : separationA;
-  const owner = flip ? B_REFERENCE_BIT : 0;
+  const owner = flip ? IdBit.B_REFERENCE : 0;
   const rRef = ref.radius;
   const rInc = inc.radius;
   const nx = ref.nx[refEdge];
@@ -303,19 +311,19 @@ function collideLoaded(): number {
     }
   }
   const inc2 = inc1 + 1 === inc.count ? 0 : inc1 + 1;
-  faces[F_NX] = nx;
-  faces[F_NY] = ny;
-  faces[F_V1X] = v1x;
-  faces[F_V1Y] = v1y;
-  faces[F_V2X] = v2x;
-  faces[F_V2Y] = v2y;
-  faces[F_W1X] = inc.x[inc1];
-  faces[F_W1Y] = inc.y[inc1];
-  faces[F_W2X] = inc.x[inc2];
-  faces[F_W2Y] = inc.y[inc2];
-  faces[F_SEPARATION] = separation;
-  faces[F_R_REF] = rRef;
-  faces[F_R_INC] = rInc;
+  faces[F.NX] = nx;
+  faces[F.NY] = ny;
+  faces[F.V1X] = v1x;
+  faces[F.V1Y] = v1y;
+  faces[F.V2X] = v2x;
+  faces[F.V2Y] = v2y;
+  faces[F.W1X] = inc.x[inc1];
+  faces[F.W1Y] = inc.y[inc1];
+  faces[F.W2X] = inc.x[inc2];
+  faces[F.W2Y] = inc.y[inc2];
+  faces[F.SEPARATION] = separation;
+  faces[F.R_REF] = rRef;
+  faces[F.R_INC] = rInc;
   return contactFromFaces(owner, refEdge, ref2, inc1, inc2);
 }
 
@@ -324,19 +332,21 @@ function collideLoaded(): number {
  * on the heap, and this runs for every polygon pair of every step.
  */
 const faces = new Float64Array(13);
-const F_NX = 0;
-const F_NY = 1;
-const F_V1X = 2;
-const F_V1Y = 3;
-const F_V2X = 4;
-const F_V2Y = 5;
-const F_W1X = 6;
-const F_W1Y = 7;
-const F_W2X = 8;
-const F_W2Y = 9;
-const F_SEPARATION = 10;
-const F_R_REF = 11;
-const F_R_INC = 12;
+enum F {
+  NX = 0,
+  NY = 1,
+  V1X = 2,
+  V1Y = 3,
+  V2X = 4,
+  V2Y = 5,
+  W1X = 6,
+  W1Y = 7,
+  W2X = 8,
+  W2Y = 9,
+  SEPARATION = 10,
+  R_REF = 11,
+  R_INC = 12,
+}
 
 /**
  * Steps 3 and 4 above, once the faces are chosen (inputs in `faces`): reference edge `refEdge` from
@@ -345,22 +355,22 @@ const F_R_INC = 12;
  * returns how many.
  */
 function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: number, inc2: number): number {
-  const nx = faces[F_NX];
-  const ny = faces[F_NY];
-  const v1x = faces[F_V1X];
-  const v1y = faces[F_V1Y];
-  const v2x = faces[F_V2X];
-  const v2y = faces[F_V2Y];
-  const w1x = faces[F_W1X];
-  const w1y = faces[F_W1Y];
-  const w2x = faces[F_W2X];
-  const w2y = faces[F_W2Y];
-  const separation = faces[F_SEPARATION];
-  const rRef = faces[F_R_REF];
-  const rInc = faces[F_R_INC];
+  const nx = faces[F.NX];
+  const ny = faces[F.NY];
+  const v1x = faces[F.V1X];
+  const v1y = faces[F.V1Y];
+  const v2x = faces[F.V2X];
+  const v2y = faces[F.V2Y];
+  const w1x = faces[F.W1X];
+  const w1y = faces[F.W1Y];
+  const w2x = faces[F.W2X];
+  const w2y = faces[F.W2Y];
+  const separation = faces[F.SEPARATION];
+  const rRef = faces[F.R_REF];
+  const rInc = faces[F.R_INC];
   const speculativeDistance = collideReach[0];
-  local[L_NX] = nx;
-  local[L_NY] = ny;
+  local[L.NX] = nx;
+  local[L.NY] = ny;
   if (separation > VERTEX_PAIR_MIN_GAP) {
     // cores apart: when the edges' true distance exceeds the face separation, two vertices are closest
     segmentPair[0] = v1x;
@@ -380,14 +390,14 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
       if (!(distance - rRef - rInc < speculativeDistance)) return 0;
       const refVertex = closest.s < 0.5 ? refEdge : ref2;
       const incVertex = closest.t < 0.5 ? inc1 : inc2;
-      local[L_NX] = ux;
-      local[L_NY] = uy;
+      local[L.NX] = ux;
+      local[L.NY] = uy;
       setLocalPoint(
         0,
         closest.qx,
         closest.qy,
         distance,
-        VERTEX_PAIR_BIT | owner | (refVertex << 4) | incVertex,
+        IdBit.VERTEX_PAIR | owner | (refVertex << 4) | incVertex,
       );
       return 1;
     }
@@ -517,7 +527,7 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   const edgeB = bestRectangleEdge(dB0, dB1, reachB0, reachB1);
   const separationB = separationOut[0];
   if (separationB >= limit) {
-    separatingAxis = B_AXIS + edgeB + 1;
+    separatingAxis = Axis.B + edgeB + 1;
     return 0;
   }
 
@@ -587,20 +597,20 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
     w2x = rc * x2 - rs * y2 + rx;
     w2y = rs * x2 + rc * y2 + ry;
   }
-  faces[F_NX] = nx;
-  faces[F_NY] = ny;
-  faces[F_V1X] = v1x;
-  faces[F_V1Y] = v1y;
-  faces[F_V2X] = v2x;
-  faces[F_V2Y] = v2y;
-  faces[F_W1X] = w1x;
-  faces[F_W1Y] = w1y;
-  faces[F_W2X] = w2x;
-  faces[F_W2Y] = w2y;
-  faces[F_SEPARATION] = flip ? separationB : separationA;
-  faces[F_R_REF] = flip ? radiusB : radiusA;
-  faces[F_R_INC] = flip ? radiusA : radiusB;
-  return contactFromFaces(flip ? B_REFERENCE_BIT : 0, refEdge, ref2, inc1, inc2);
+  faces[F.NX] = nx;
+  faces[F.NY] = ny;
+  faces[F.V1X] = v1x;
+  faces[F.V1Y] = v1y;
+  faces[F.V2X] = v2x;
+  faces[F.V2Y] = v2y;
+  faces[F.W1X] = w1x;
+  faces[F.W1Y] = w1y;
+  faces[F.W2X] = w2x;
+  faces[F.W2Y] = w2y;
+  faces[F.SEPARATION] = flip ? separationB : separationA;
+  faces[F.R_REF] = flip ? radiusB : radiusA;
+  faces[F.R_INC] = flip ? radiusA : radiusB;
+  return contactFromFaces(flip ? IdBit.B_REFERENCE : 0, refEdge, ref2, inc1, inc2);
 }
 
 /** Whether the last collideLoaded or collideRectangles took its reference face from B. */
@@ -623,8 +633,8 @@ function writeManifold(
   const s = xf.q.s;
   const px = xf.p.x;
   const py = xf.p.y;
-  const nx = local[L_NX];
-  const ny = local[L_NY];
+  const nx = local[L.NX];
+  const ny = local[L.NY];
   const flip = referenceFlip;
   const sign = flip ? -1 : 1;
   out.normalX = sign * (c * nx - s * ny);
@@ -632,7 +642,7 @@ function writeManifold(
   const rRef = flip ? radiusB : radiusA;
   const rInc = flip ? radiusA : radiusB;
   for (let i = 0; i < count; i++) {
-    const k = L_POINTS + 3 * i;
+    const k = L.POINTS + 3 * i;
     const coreSeparation = local[k + 2];
     // halfway between the reference surface (x - (s - rRef) n) and the incident surface (x - rInc n)
     const shift = 0.5 * (rRef - rInc - coreSeparation);

@@ -53,7 +53,10 @@ enum Block {
   ROWS = 6,
   SIZE = ROWS * ROWS,
 }
-const BODY = 0;
+/** nodeKind of a body's node (a joint's is its index + 1) */
+enum NodeKind {
+  BODY = 0,
+}
 
 export class JointTree {
   /** the joints solved here this step, in creation order */
@@ -166,7 +169,7 @@ export class JointTree {
     }
     // the last build's bodies leave the tree
     for (let n = 0; n < this.nodeCount; n++)
-      if (this.nodeKind[n] === BODY) this.bodyNode[this.nodeBody[n]] = -1;
+      if (this.nodeKind[n] === NodeKind.BODY) this.bodyNode[this.nodeBody[n]] = -1;
     this.nodeCount = 0;
     this.joints.length = 0;
     this.closures.length = 0;
@@ -381,7 +384,7 @@ export class JointTree {
     const node = this.bodyNode[b];
     if (node !== -1) return node;
     this.bodyNode[b] = nodes;
-    this.nodeKind[nodes] = BODY;
+    this.nodeKind[nodes] = NodeKind.BODY;
     this.nodeDim[nodes] = 3;
     this.nodeBody[nodes] = b;
     this.nodeGround[nodes] = -1;
@@ -486,7 +489,8 @@ export class JointTree {
       if (this.nodeOfA[j] !== -1) this.nodeOfA[j] = rank[this.nodeOfA[j]];
       if (this.nodeOfB[j] !== -1) this.nodeOfB[j] = rank[this.nodeOfB[j]];
     }
-    for (let n = 0; n < nodes; n++) if (this.nodeKind[n] === BODY) this.bodyNode[this.nodeBody[n]] = n;
+    for (let n = 0; n < nodes; n++)
+      if (this.nodeKind[n] === NodeKind.BODY) this.bodyNode[this.nodeBody[n]] = n;
   }
 
   /**
@@ -572,7 +576,7 @@ export class JointTree {
       if (p === -1) continue;
       // H: the Jacobian block of the edge's joint at the edge's body, transposed when the body is
       // the child (rows are the child's, columns the parent's)
-      const childIsJoint = nodeKind[n] !== BODY;
+      const childIsJoint = nodeKind[n] !== NodeKind.BODY;
       const j = (childIsJoint ? nodeKind[n] : nodeKind[p]) - 1;
       const jac = nodeOfA[j] === (childIsJoint ? p : n) ? jA : jB;
       const m = 9 * j;
@@ -664,7 +668,7 @@ export class JointTree {
         const base = (2 * c + r) * 3 * MAX_CLOSURE_NODES;
         for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
           const o = base + 3 * n;
-          const nodeIsBody = this.nodeKind[n] === BODY;
+          const nodeIsBody = this.nodeKind[n] === NodeKind.BODY;
           response[o] = nodeIsBody ? x[Block.ROWS * n] : 0;
           response[o + 1] = nodeIsBody ? x[Block.ROWS * n + 1] : 0;
           response[o + 2] = nodeIsBody ? x[Block.ROWS * n + 2] : 0;
@@ -696,7 +700,7 @@ export class JointTree {
     const bx = 2 * c * 3 * MAX_CLOSURE_NODES;
     const by = bx + 3 * MAX_CLOSURE_NODES;
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
-      if (this.nodeKind[n] !== BODY) continue;
+      if (this.nodeKind[n] !== NodeKind.BODY) continue;
       const s = this.nodeBody[n] * S.STRIDE;
       const ox = bx + 3 * n;
       const oy = by + 3 * n;
@@ -714,7 +718,7 @@ export class JointTree {
     const d = this.d;
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
       const o = Block.SIZE * n;
-      const isBody = this.nodeKind[n] === BODY;
+      const isBody = this.nodeKind[n] === NodeKind.BODY;
       const b = this.nodeBody[n];
       const m = isBody ? 1 / invMass[b] : 0;
       d[o] = m;
@@ -797,7 +801,7 @@ export class JointTree {
     }
     this.substitute();
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
-      if (this.nodeKind[n] !== BODY) continue;
+      if (this.nodeKind[n] !== NodeKind.BODY) continue;
       const o = Block.ROWS * n;
       const s = this.nodeBody[n] * S.STRIDE;
       state[s + S.VX] += x[o];
