@@ -17,26 +17,30 @@ const SINGLE_POINT_ID = 2;
 const closest = makeSegmentClosest();
 
 /**
- * Writes manifold point `index` from a point (x, y) on B's core, in A's frame, given the normal
- * n from A to B (A's frame) and B's core separation along n.
+ * A point for writePoint, in A's frame: a point (x, y) on B's core, the normal n from A to B, B's core
+ * separation along n and the two radii. An array: V8 puts on the heap every double passed to a call
+ * it does not inline, and this runs for every capsule pair of every step.
  */
-function writePoint(
-  xfA: Transform,
-  out: Manifold,
-  index: number,
-  x: number,
-  y: number,
-  nx: number,
-  ny: number,
-  coreSeparation: number,
-  rA: number,
-  rB: number,
-  id: number,
-): void {
+const candidate = new Float64Array(7);
+enum K {
+  X = 0,
+  Y = 1,
+  NX = 2,
+  NY = 3,
+  CORE_SEPARATION = 4,
+  RA = 5,
+  RB = 6,
+}
+
+/** Writes manifold point `index` from `candidate`, with feature id `id`. */
+function writePoint(xfA: Transform, out: Manifold, index: number, id: number): void {
+  const coreSeparation = candidate[K.CORE_SEPARATION];
+  const rA = candidate[K.RA];
+  const rB = candidate[K.RB];
   // halfway between A's surface (x - (s - rA) n) and B's surface (x - rB n)
   const shift = 0.5 * (rA - rB - coreSeparation);
-  const mx = x + shift * nx;
-  const my = y + shift * ny;
+  const mx = candidate[K.X] + shift * candidate[K.NX];
+  const my = candidate[K.Y] + shift * candidate[K.NY];
   const { c, s } = xfA.q;
   const point = out.points[index];
   point.x = c * mx - s * my + xfA.p.x;
@@ -46,25 +50,33 @@ function writePoint(
 }
 
 /**
- * Two rounded segments, in A's frame. Nearly parallel segments whose projections overlap get two
+ * Two rounded segments (capsules, or a capsule and a segment of radius 0) packed in `data`, worked
+ * in A's frame. Nearly parallel segments whose projections overlap get two
  * points (B's ends clipped to A's extent) along A's side normal, so that a capsule lying on another
  * is stable; otherwise one point between the closest points of the cores.
  */
-function collideRoundedSegments(
-  a1x: number,
-  a1y: number,
-  a2x: number,
-  a2y: number,
-  rA: number,
+export function collideRoundedSegmentPair(
+  data: Float64Array,
+  baseA: number,
   xfA: Transform,
-  b1x: number,
-  b1y: number,
-  b2x: number,
-  b2y: number,
-  rB: number,
+  baseB: number,
   xfB: Transform,
   out: Manifold,
 ): void {
+  const a = baseA + Pack.VERTICES;
+  const b = baseB + Pack.VERTICES;
+  const a1x = data[a];
+  const a1y = data[a + 1];
+  const a2x = data[a + Pack.VERTEX_STRIDE];
+  const a2y = data[a + Pack.VERTEX_STRIDE + 1];
+  const rA = data[baseA + Pack.RADIUS];
+  const b1x = data[b];
+  const b1y = data[b + 1];
+  const b2x = data[b + Pack.VERTEX_STRIDE];
+  const b2y = data[b + Pack.VERTEX_STRIDE + 1];
+  const rB = data[baseB + Pack.RADIUS];
+  candidate[K.RA] = rA;
+  candidate[K.RB] = rB;
   const speculativeDistance = collideReach[0];
   out.pointCount = 0;
   const qa = xfA.q;
@@ -136,7 +148,12 @@ function collideRoundedSegments(
       }
       const coreSeparation = (x - a1x) * sx + (y - a1y) * sy;
       if (coreSeparation - radius < speculativeDistance) {
-        writePoint(xfA, out, out.pointCount, x, y, sx, sy, coreSeparation, rA, rB, k);
+        candidate[K.X] = x;
+        candidate[K.Y] = y;
+        candidate[K.NX] = sx;
+        candidate[K.NY] = sy;
+        candidate[K.CORE_SEPARATION] = coreSeparation;
+        writePoint(xfA, out, out.pointCount, k);
         out.pointCount += 1;
       }
     }
@@ -150,34 +167,11 @@ function collideRoundedSegments(
   }
   const coreSeparation = (closest.qx - closest.px) * sx + (closest.qy - closest.py) * sy;
   if (!(coreSeparation - radius < speculativeDistance)) return;
-  writePoint(xfA, out, 0, closest.qx, closest.qy, sx, sy, coreSeparation, rA, rB, SINGLE_POINT_ID);
+  candidate[K.X] = closest.qx;
+  candidate[K.Y] = closest.qy;
+  candidate[K.NX] = sx;
+  candidate[K.NY] = sy;
+  candidate[K.CORE_SEPARATION] = coreSeparation;
+  writePoint(xfA, out, 0, SINGLE_POINT_ID);
   out.pointCount = 1;
-}
-
-/** Two rounded segments (capsules, or a capsule and a segment of radius 0), packed in `data`. */
-export function collideRoundedSegmentPair(
-  data: Float64Array,
-  baseA: number,
-  xfA: Transform,
-  baseB: number,
-  xfB: Transform,
-  out: Manifold,
-): void {
-  const a = baseA + Pack.VERTICES;
-  const b = baseB + Pack.VERTICES;
-  collideRoundedSegments(
-    data[a],
-    data[a + 1],
-    data[a + Pack.VERTEX_STRIDE],
-    data[a + Pack.VERTEX_STRIDE + 1],
-    data[baseA + Pack.RADIUS],
-    xfA,
-    data[b],
-    data[b + 1],
-    data[b + Pack.VERTEX_STRIDE],
-    data[b + Pack.VERTEX_STRIDE + 1],
-    data[baseB + Pack.RADIUS],
-    xfB,
-    out,
-  );
 }
