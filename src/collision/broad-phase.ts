@@ -164,10 +164,10 @@ export class BroadPhase {
       const tree = this.trees[type];
       const shapeId = tree.getUserData(id);
       if (type === ProxyType.DYNAMIC) {
-        this.findPairs(key, shapeId, tree.box, 4 * id, ProxyType.STATIC, existing, out);
-        this.findPairs(key, shapeId, tree.box, 4 * id, ProxyType.KINEMATIC, existing, out);
+        this.findPairs(key, shapeId, tree.boxes, 4 * id, ProxyType.STATIC, existing, out);
+        this.findPairs(key, shapeId, tree.boxes, 4 * id, ProxyType.KINEMATIC, existing, out);
       }
-      this.findPairs(key, shapeId, tree.box, 4 * id, ProxyType.DYNAMIC, existing, out);
+      this.findPairs(key, shapeId, tree.boxes, 4 * id, ProxyType.DYNAMIC, existing, out);
     }
     for (let i = 0; i < buffer.length; i++) {
       const key = buffer.data[i];

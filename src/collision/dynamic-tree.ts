@@ -28,13 +28,9 @@ enum Balance {
  *
  * Not re-entrant: a ray-cast visitor must not modify the tree (queries are fine).
  */
-/** the box `query` hands to `queryBox` */
-const queryScratch = new Float64Array(4);
-
 export class DynamicTree {
   /** minX, minY, maxX, maxY per node. */
-  /** per node: fat box (minX, minY, maxX, maxY); read-only outside the tree */
-  box: Float64Array;
+  private box: Float64Array;
   /** Parent of a used node; next free node for a free one. */
   private parent: Int32Array;
   /** First child, or NULL for a leaf. */
@@ -150,19 +146,15 @@ export class DynamicTree {
     return total / rootPerimeter;
   }
 
-  /** Appends to `out` the id of every proxy whose box overlaps (or touches) the given box. */
-  query(minX: number, minY: number, maxX: number, maxY: number, out: IntList): void {
-    const q = queryScratch;
-    q[0] = minX;
-    q[1] = minY;
-    q[2] = maxX;
-    q[3] = maxY;
-    this.queryBox(q, 0, out);
+  /** Per node: fat box (minX, minY, maxX, maxY), a proxy's at 4 × its id. Read only. */
+  get boxes(): Float64Array {
+    return this.box;
   }
 
   /**
-   * As query, for the box (minX, minY, maxX, maxY) at `at` in `boxes`: the step's callers pass their
-   * boxes so, as V8 puts on the heap every double passed to a call it does not inline.
+   * Appends to `out` the id of every proxy whose box overlaps (or touches) the box (minX, minY, maxX,
+   * maxY) at `at` in `boxes`: a box in an array, as V8 puts on the heap every double passed to a call
+   * it does not inline.
    */
   queryBox(boxes: Float64Array, at: number, out: IntList): void {
     if (this.root === Node.NULL) return;

@@ -25,7 +25,7 @@ const overlaps = (a: Box, b: Box) => !(a[0] > b[2] || a[1] > b[3] || a[2] < b[0]
 
 function treeQuery(tree: DynamicTree, q: Box): number[] {
   const out = new IntList();
-  tree.query(q[0], q[1], q[2], q[3], out);
+  tree.queryBox(Float64Array.from(q), 0, out);
   return Array.from(out.data.subarray(0, out.length)).sort((a, b) => a - b);
 }
 
@@ -278,7 +278,7 @@ describe('DynamicTree', () => {
         }
       }
       const out = new IntList();
-      tree.query(10, 10, 30, 30, out);
+      tree.queryBox(Float64Array.of(10, 10, 30, 30), 0, out);
       return [
         ids.join(),
         tree.getHeight(),
