@@ -275,14 +275,24 @@ export function warmStartContacts(cc: ContactConstraints, state: Float64Array): 
     let vBx = state[sb + S.VX];
     let vBy = state[sb + S.VY];
     let wB = state[sb + S.W];
-    const count = d[base + C.COUNT];
-    for (let j = 0; j < count; j++) {
-      const p = base + C.POINTS + j * P.STRIDE;
-      const ni = d[p + P.NIMP];
-      const ti = d[p + P.TIMP];
-      // P = ni * n + ti * t, with t = (ny, -nx)
-      const Px = ni * nx + ti * ny;
-      const Py = ni * ny - ti * nx;
+    // P = ni * n + ti * t, with t = (ny, -nx); the second point (if any) unrolled, as in solveContacts
+    let p = base + C.POINTS;
+    let ni = d[p + P.NIMP];
+    let ti = d[p + P.TIMP];
+    let Px = ni * nx + ti * ny;
+    let Py = ni * ny - ti * nx;
+    wA -= iA * (ni * d[p + P.RNA] + ti * d[p + P.RTA]);
+    vAx -= mA * Px;
+    vAy -= mA * Py;
+    wB += iB * (ni * d[p + P.RNB] + ti * d[p + P.RTB]);
+    vBx += mB * Px;
+    vBy += mB * Py;
+    if (d[base + C.COUNT] === 2) {
+      p += P.STRIDE;
+      ni = d[p + P.NIMP];
+      ti = d[p + P.TIMP];
+      Px = ni * nx + ti * ny;
+      Py = ni * ny - ti * nx;
       wA -= iA * (ni * d[p + P.RNA] + ti * d[p + P.RTA]);
       vAx -= mA * Px;
       vAy -= mA * Py;
