@@ -60,28 +60,54 @@ export function updateContacts(core: WorldCore): void {
   const speculative = core.settings.speculativeDistance;
   const matchDistance2 = 4 * speculative * speculative;
   const events = core.events;
+  // the columns in locals: the loop calls out (collide, events), and V8 reloads every property
+  // read after a call; nothing called here resizes them
+  const alive = contacts.alive;
+  const contactBodyA = contacts.bodyA;
+  const contactBodyB = contacts.bodyB;
+  const contactShapeA = contacts.shapeA;
+  const contactShapeB = contacts.shapeB;
+  const contactFlags = contacts.flags;
+  const pointCount = contacts.pointCount;
+  const pointId = contacts.pointId;
+  const pointX = contacts.pointX;
+  const pointY = contacts.pointY;
+  const separation = contacts.separation;
+  const normalImpulse = contacts.normalImpulse;
+  const tangentImpulse = contacts.tangentImpulse;
+  const normalX = contacts.normalX;
+  const normalY = contacts.normalY;
+  const separatingAxis = contacts.separatingAxis;
+  const minX = shapes.minX;
+  const minY = shapes.minY;
+  const maxX = shapes.maxX;
+  const maxY = shapes.maxY;
+  const shapeKind = shapes.kind;
+  const proxyKey = shapes.proxyKey;
+  const packed = shapes.packed;
+  const points = manifold.points;
   for (let c = 0, n = contacts.slotCount; c < n; c++) {
-    if (contacts.alive[c] === 0) continue;
-    const bodyA = contacts.bodyA[c];
-    const bodyB = contacts.bodyB[c];
+    if (alive[c] === 0) continue;
+    const bodyA = contactBodyA[c];
+    const bodyB = contactBodyB[c];
     const awakeA = (flagsB[bodyA] & BodyFlag.AWAKE) !== 0;
     const awakeB = (flagsB[bodyB] & BodyFlag.AWAKE) !== 0;
     if (!awakeA && !awakeB) continue;
-    const shapeA = contacts.shapeA[c];
-    const shapeB = contacts.shapeB[c];
+    const shapeA = contactShapeA[c];
+    const shapeB = contactShapeB[c];
     // gap between the shapes' tight boxes (negative when they overlap)
     const gap = Math.max(
-      shapes.minX[shapeA] - shapes.maxX[shapeB],
-      shapes.minX[shapeB] - shapes.maxX[shapeA],
-      shapes.minY[shapeA] - shapes.maxY[shapeB],
-      shapes.minY[shapeB] - shapes.maxY[shapeA],
+      minX[shapeA] - maxX[shapeB],
+      minX[shapeB] - maxX[shapeA],
+      minY[shapeA] - maxY[shapeB],
+      minY[shapeB] - maxY[shapeA],
     );
     // the fat boxes hold the tight ones: they can only have come apart if the tight ones are apart
-    if (gap > 0 && !broad.fatBoxesOverlap(shapes.proxyKey[shapeA], shapes.proxyKey[shapeB])) {
+    if (gap > 0 && !broad.fatBoxesOverlap(proxyKey[shapeA], proxyKey[shapeB])) {
       core.destroyContact(c, true);
       continue;
     }
-    const flags = contacts.flags[c];
+    const flags = contactFlags[c];
     const sensor = (flags & ContactFlag.SENSOR) !== 0;
     const k0 = c * 2;
     const reach = sensor ? 0 : speculative;
@@ -90,20 +116,20 @@ export function updateContacts(core: WorldCore): void {
       // tolerance below the shapes' distance (manifold-polygon.ts): the manifold would be empty
       manifold.pointCount = 0;
     } else {
-      setReferenceHint(contacts.pointCount[c] > 0 ? referenceOwnerOfId(contacts.pointId[k0]) : -1);
-      setSeparatingAxisHint(contacts.separatingAxis[c]);
+      setReferenceHint(pointCount[c] > 0 ? referenceOwnerOfId(pointId[k0]) : -1);
+      setSeparatingAxisHint(separatingAxis[c]);
       collideReach[0] = reach;
       collidePacked(
-        shapes.kind[shapeA],
-        shapes.kind[shapeB],
-        shapes.packed,
+        shapeKind[shapeA],
+        shapeKind[shapeB],
+        packed,
         shapeA * Pack.STRIDE,
         core.fillTransform(bodyA, core.xfA),
         shapeB * Pack.STRIDE,
         core.fillTransform(bodyB, core.xfB),
         manifold,
       );
-      contacts.separatingAxis[c] = lastSeparatingAxis();
+      separatingAxis[c] = lastSeparatingAxis();
     }
     const count = manifold.pointCount;
     if (!sensor) {
@@ -111,21 +137,20 @@ export function updateContacts(core: WorldCore): void {
       // point nearest to the new one. The position fallback keeps the impulses when the manifold
       // swaps its reference face between the two shapes (nearly parallel faces under load do), which
       // renames the features but not the physical points; losing them makes large piles jitter.
-      const oldCount = contacts.pointCount[c];
-      const oldId0 = contacts.pointId[k0];
-      const oldId1 = contacts.pointId[k0 + 1];
-      const ox0 = contacts.pointX[k0];
-      const oy0 = contacts.pointY[k0];
-      const ox1 = contacts.pointX[k0 + 1];
-      const oy1 = contacts.pointY[k0 + 1];
-      const n0 = contacts.normalImpulse[k0];
-      const t0 = contacts.tangentImpulse[k0];
-      const n1 = contacts.normalImpulse[k0 + 1];
-      const t1 = contacts.tangentImpulse[k0 + 1];
-      const sameNormal =
-        contacts.normalX[c] * manifold.normalX + contacts.normalY[c] * manifold.normalY > 0.99;
+      const oldCount = pointCount[c];
+      const oldId0 = pointId[k0];
+      const oldId1 = pointId[k0 + 1];
+      const ox0 = pointX[k0];
+      const oy0 = pointY[k0];
+      const ox1 = pointX[k0 + 1];
+      const oy1 = pointY[k0 + 1];
+      const n0 = normalImpulse[k0];
+      const t0 = tangentImpulse[k0];
+      const n1 = normalImpulse[k0 + 1];
+      const t1 = tangentImpulse[k0 + 1];
+      const sameNormal = normalX[c] * manifold.normalX + normalY[c] * manifold.normalY > 0.99;
       for (let j = 0; j < count; j++) {
-        const p = manifold.points[j];
+        const p = points[j];
         const k = k0 + j;
         let match = -1;
         if (oldCount > 0 && p.id === oldId0) match = 0;
@@ -136,32 +161,32 @@ export function updateContacts(core: WorldCore): void {
             oldCount > 1 ? (p.x - ox1) * (p.x - ox1) + (p.y - oy1) * (p.y - oy1) : Number.POSITIVE_INFINITY;
           if (Math.min(d0, d1) < matchDistance2) match = d0 <= d1 ? 0 : 1;
         }
-        contacts.pointX[k] = p.x;
-        contacts.pointY[k] = p.y;
-        contacts.separation[k] = p.separation;
-        contacts.pointId[k] = p.id;
-        contacts.normalImpulse[k] = match === 0 ? n0 : match === 1 ? n1 : 0;
-        contacts.tangentImpulse[k] = match === 0 ? t0 : match === 1 ? t1 : 0;
+        pointX[k] = p.x;
+        pointY[k] = p.y;
+        separation[k] = p.separation;
+        pointId[k] = p.id;
+        normalImpulse[k] = match === 0 ? n0 : match === 1 ? n1 : 0;
+        tangentImpulse[k] = match === 0 ? t0 : match === 1 ? t1 : 0;
       }
       // the normal of a manifold without points is not read (and not always written by collide)
       if (count > 0) {
-        contacts.normalX[c] = manifold.normalX;
-        contacts.normalY[c] = manifold.normalY;
+        normalX[c] = manifold.normalX;
+        normalY[c] = manifold.normalY;
       }
     }
-    contacts.pointCount[c] = count;
+    pointCount[c] = count;
     const touching = count > 0;
     const wasTouching = (flags & ContactFlag.TOUCHING) !== 0;
     if (touching === wasTouching) continue;
     if (touching) {
-      contacts.flags[c] = flags | ContactFlag.TOUCHING;
+      contactFlags[c] = flags | ContactFlag.TOUCHING;
       events.recordBegin(contacts, c, shapes);
       if (!sensor) {
         if (!awakeA) core.wake(bodyA);
         if (!awakeB) core.wake(bodyB);
       }
     } else {
-      contacts.flags[c] = flags & ~ContactFlag.TOUCHING;
+      contactFlags[c] = flags & ~ContactFlag.TOUCHING;
       events.recordEnd(contacts, c, shapes);
     }
   }
