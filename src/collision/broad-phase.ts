@@ -49,8 +49,9 @@ export interface BoxColumns {
  * `updatePairs`. Pair rules: dynamic proxies pair with every type; static and kinematic proxies pair
  * only with dynamic ones. Each tree proxy's user data is the shape id.
  */
-/** the box `query` hands to `queryBox` */
+/** the box `query` hands to `queryBox`, and the fat box `moveProxy` hands to the tree */
 const queryScratch = new Float64Array(4);
+const moveScratch = new Float64Array(4);
 
 export class BroadPhase {
   private readonly trees: DynamicTree[] = [new DynamicTree(), new DynamicTree(), new DynamicTree()];
@@ -134,7 +135,11 @@ export class BroadPhase {
       return false;
     }
     const m = type === ProxyType.STATIC ? 0 : this.aabbMargin;
-    tree.moveProxy(id, minX - m, minY - m, maxX + m, maxY + m);
+    moveScratch[0] = minX - m;
+    moveScratch[1] = minY - m;
+    moveScratch[2] = maxX + m;
+    moveScratch[3] = maxY + m;
+    tree.moveProxy(id, moveScratch, 0);
     this.bufferMove(key);
     return true;
   }

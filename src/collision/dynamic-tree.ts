@@ -83,11 +83,15 @@ export class DynamicTree {
     this.leafCount--;
   }
 
-  /** Re-inserts the proxy with a new box. */
-  moveProxy(id: number, minX: number, minY: number, maxX: number, maxY: number): void {
+  /**
+   * Re-inserts the proxy with a new box, the four numbers at `at` in `boxes` (an array, as for
+   * queryBox: doubles passed to a call V8 does not inline are boxed, and this runs for every proxy
+   * that left its fat box).
+   */
+  moveProxy(id: number, boxes: Float64Array, at: number): void {
     this.checkProxy(id);
     this.removeLeaf(id);
-    this.setBox(id, minX, minY, maxX, maxY);
+    this.setBox(id, boxes[at], boxes[at + 1], boxes[at + 2], boxes[at + 3]);
     this.insertLeaf(id);
   }
 

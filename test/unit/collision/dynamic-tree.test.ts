@@ -131,7 +131,7 @@ describe('DynamicTree', () => {
           const dx = (random() - 0.5) * 4;
           const dy = (random() - 0.5) * 4;
           const moved: Box = [b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy];
-          tree.moveProxy(id, moved[0], moved[1], moved[2], moved[3]);
+          tree.moveProxy(id, Float64Array.from(moved), 0);
           boxes.set(id, moved);
         } else if (r < 0.4) {
           tree.destroyProxy(id);
@@ -182,7 +182,7 @@ describe('DynamicTree', () => {
       if (ids.length > 0 && r < 0.3) {
         tree.destroyProxy(ids.splice(Math.floor(random() * ids.length), 1)[0]);
       } else if (ids.length > 0 && r < 0.6) {
-        tree.moveProxy(ids[Math.floor(random() * ids.length)], b[0], b[1], b[2], b[3]);
+        tree.moveProxy(ids[Math.floor(random() * ids.length)], Float64Array.from(b), 0);
       } else {
         ids.push(tree.createProxy(b[0], b[1], b[2], b[3], op));
       }
@@ -274,7 +274,7 @@ describe('DynamicTree', () => {
         if (i % 7 === 3) tree.destroyProxy(ids.splice(Math.floor(random() * ids.length), 1)[0]);
         if (i % 5 === 1) {
           const m = randomBox(random, 50, 2);
-          tree.moveProxy(ids[Math.floor(random() * ids.length)], m[0], m[1], m[2], m[3]);
+          tree.moveProxy(ids[Math.floor(random() * ids.length)], Float64Array.from(m), 0);
         }
       }
       const out = new IntList();
