@@ -236,14 +236,6 @@ enum L {
 }
 const localIds = new Int32Array(2);
 
-function setLocalPoint(index: number, x: number, y: number, coreSeparation: number, id: number): void {
-  const k = L.POINTS + 3 * index;
-  local[k] = x;
-  local[k + 1] = y;
-  local[k + 2] = coreSeparation;
-  localIds[index] = id;
-}
-
 /** Whether B's face of largest separation is the reference face (step 2 and the reference hint). */
 function referenceFromB(separationA: number, separationB: number): boolean {
   return referenceHint === 1
@@ -390,15 +382,13 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
       if (!(distance - rRef - rInc < speculativeDistance)) return 0;
       const refVertex = closest.s < 0.5 ? refEdge : ref2;
       const incVertex = closest.t < 0.5 ? inc1 : inc2;
+      // the points are written in place: doubles passed to a helper V8 does not inline are boxed
       local[L.NX] = ux;
       local[L.NY] = uy;
-      setLocalPoint(
-        0,
-        closest.qx,
-        closest.qy,
-        distance,
-        IdBit.VERTEX_PAIR | owner | (refVertex << 4) | incVertex,
-      );
+      local[L.POINTS] = closest.qx;
+      local[L.POINTS + 1] = closest.qy;
+      local[L.POINTS + 2] = distance;
+      localIds[0] = IdBit.VERTEX_PAIR | owner | (refVertex << 4) | incVertex;
       return 1;
     }
   }
@@ -417,7 +407,10 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
     const first = s1 <= s2;
     const s = first ? s1 : s2;
     if (!(s - rRef - rInc < speculativeDistance)) return 0;
-    setLocalPoint(0, first ? w1x : w2x, first ? w1y : w2y, s, idBase | (first ? inc1 : inc2));
+    local[L.POINTS] = first ? w1x : w2x;
+    local[L.POINTS + 1] = first ? w1y : w2y;
+    local[L.POINTS + 2] = s;
+    localIds[0] = idBase | (first ? inc1 : inc2);
     return 1;
   }
   let count = 0;
@@ -433,7 +426,11 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
     }
     const s = (x - v1x) * nx + (y - v1y) * ny;
     if (s - rRef - rInc < speculativeDistance) {
-      setLocalPoint(count, x, y, s, idBase | (k === 0 ? inc1 : inc2));
+      const at = L.POINTS + 3 * count;
+      local[at] = x;
+      local[at + 1] = y;
+      local[at + 2] = s;
+      localIds[count] = idBase | (k === 0 ? inc1 : inc2);
       count++;
     }
   }
