@@ -139,7 +139,9 @@ export class BroadPhase {
     moveScratch[1] = minY - m;
     moveScratch[2] = maxX + m;
     moveScratch[3] = maxY + m;
-    tree.moveProxy(id, moveScratch, 0);
+    // moving proxies are re-placed together at the next updatePairs (see DynamicTree.settleMoves)
+    if (type === ProxyType.STATIC) tree.moveProxy(id, moveScratch, 0);
+    else tree.enlargeProxy(id, moveScratch, 0);
     this.bufferMove(key);
     return true;
   }
@@ -159,6 +161,7 @@ export class BroadPhase {
    * is buffered, the types may pair, and `existing` does not hold the pair of shape ids.
    */
   updatePairs(existing: PairSet, out: IntList): void {
+    for (let type = 0; type < 3; type++) this.trees[type].settleMoves();
     const start = out.length;
     const buffer = this.moveBuffer;
     for (let i = 0; i < buffer.length; i++) {

@@ -25,6 +25,8 @@ enum Balance {
  * (the 2D surface-area heuristic). On the way back up, every ancestor is rebalanced by tree rotations
  * (swaps of a child with a grandchild): forced when its children's heights differ by more than SLACK,
  * otherwise only when a swap shrinks the boxes. Heights therefore stay O(log n) even for sorted input.
+ * Proxies that move every step take enlargeProxy and settleMoves instead (moved together, or the tree
+ * rebuilt when many moved), after Box2D v3's enlarged-box scheme.
  *
  * Not re-entrant: a ray-cast visitor must not modify the tree (queries are fine).
  */
@@ -46,6 +48,12 @@ export class DynamicTree {
   private queryStack: Int32Array = new Int32Array(64);
   private rayStack: Int32Array = new Int32Array(64);
   private buildLeaves: Int32Array = new Int32Array(0);
+  /** rebuild's scratch: each leaf's doubled centre (x, y) by node id */
+  private centre: Float64Array = new Float64Array(0);
+  /** Leaves moved in place (enlargeProxy) since the last settleMoves, and a flag per node for them. */
+  private moved: Int32Array = new Int32Array(16);
+  private movedCount = 0;
+  private isMoved: Uint8Array;
 
   constructor(initialCapacity = 16) {
     const capacity = Math.max(2, initialCapacity);
@@ -55,6 +63,7 @@ export class DynamicTree {
     this.child2 = new Int32Array(capacity);
     this.height = new Int32Array(capacity);
     this.userData = new Int32Array(capacity);
+    this.isMoved = new Uint8Array(capacity);
     this.linkFree(0, capacity);
   }
 
@@ -68,6 +77,7 @@ export class DynamicTree {
   }
 
   createProxy(minX: number, minY: number, maxX: number, maxY: number, userData: number): number {
+    this.settleMoves();
     const id = this.allocate();
     this.setBox(id, minX, minY, maxX, maxY);
     this.userData[id] = userData;
@@ -78,6 +88,7 @@ export class DynamicTree {
 
   destroyProxy(id: number): void {
     this.checkProxy(id);
+    this.settleMoves();
     this.removeLeaf(id);
     this.release(id);
     this.leafCount--;
@@ -90,9 +101,58 @@ export class DynamicTree {
    */
   moveProxy(id: number, boxes: Float64Array, at: number): void {
     this.checkProxy(id);
+    this.settleMoves();
     this.removeLeaf(id);
     this.setBox(id, boxes[at], boxes[at + 1], boxes[at + 2], boxes[at + 3]);
     this.insertLeaf(id);
+  }
+
+  /**
+   * Gives the proxy a new box (as moveProxy) without moving its leaf: its ancestors only grow until
+   * they hold it, so the tree stays valid for queries, if looser. settleMoves then re-places the
+   * leaves moved this way, all at once (a step moves many: a swinging chain, a tumbling pile).
+   */
+  enlargeProxy(id: number, boxes: Float64Array, at: number): void {
+    this.checkProxy(id);
+    const minX = boxes[at];
+    const minY = boxes[at + 1];
+    const maxX = boxes[at + 2];
+    const maxY = boxes[at + 3];
+    this.setBox(id, minX, minY, maxX, maxY);
+    const box = this.box;
+    for (let p = this.parent[id]; p !== Node.NULL; p = this.parent[p]) {
+      const o = 4 * p;
+      if (box[o] <= minX && box[o + 1] <= minY && box[o + 2] >= maxX && box[o + 3] >= maxY) break;
+      box[o] = Math.min(box[o], minX);
+      box[o + 1] = Math.min(box[o + 1], minY);
+      box[o + 2] = Math.max(box[o + 2], maxX);
+      box[o + 3] = Math.max(box[o + 3], maxY);
+    }
+    if (this.isMoved[id] === 1) return;
+    this.isMoved[id] = 1;
+    if (this.movedCount === this.moved.length) this.moved = grown(this.moved, 2 * this.moved.length);
+    this.moved[this.movedCount++] = id;
+  }
+
+  /**
+   * Re-places the leaves enlargeProxy moved: one by one, as moveProxy, or, when a quarter of the
+   * leaves or more moved, by rebuilding the tree (a median-split build costs about as much as
+   * re-inserting a fifth of the leaves, and gives tight boxes everywhere).
+   */
+  settleMoves(): void {
+    const count = this.movedCount;
+    if (count === 0) return;
+    if (4 * count >= this.leafCount && this.leafCount >= 3) {
+      this.rebuild();
+      return;
+    }
+    const moved = this.moved;
+    this.forgetMoved();
+    for (let i = 0; i < count; i++) {
+      const id = moved[i];
+      this.removeLeaf(id);
+      this.insertLeaf(id);
+    }
   }
 
   getUserData(id: number): number {
@@ -257,16 +317,29 @@ export class DynamicTree {
    */
   rebuild(): void {
     if (this.leafCount < 3) return;
+    this.forgetMoved();
     if (this.buildLeaves.length < this.leafCount) this.buildLeaves = new Int32Array(this.parent.length);
+    if (this.centre.length < 2 * this.parent.length) this.centre = new Float64Array(2 * this.parent.length);
     const leaves = this.buildLeaves;
+    const centre = this.centre;
+    const box = this.box;
     let n = 0;
     for (let i = 0; i < this.height.length; i++) {
       const h = this.height[i];
-      if (h === 0) leaves[n++] = i;
-      else if (h > 0) this.release(i);
+      if (h === 0) {
+        leaves[n++] = i;
+        // doubled (min + max): the split only compares them
+        centre[2 * i] = box[4 * i] + box[4 * i + 2];
+        centre[2 * i + 1] = box[4 * i + 1] + box[4 * i + 3];
+      } else if (h > 0) this.release(i);
     }
     this.root = this.build(0, n);
     this.parent[this.root] = Node.NULL;
+  }
+
+  private forgetMoved(): void {
+    for (let i = 0; i < this.movedCount; i++) this.isMoved[this.moved[i]] = 0;
+    this.movedCount = 0;
   }
 
   /** Throws if the structure is inconsistent; for tests. */
@@ -383,6 +456,9 @@ export class DynamicTree {
     this.child2 = grown(this.child2, capacity);
     this.height = grown(this.height, capacity);
     this.userData = grown(this.userData, capacity);
+    const isMoved = new Uint8Array(capacity);
+    isMoved.set(this.isMoved);
+    this.isMoved = isMoved;
     this.linkFree(old, capacity);
   }
 
@@ -625,16 +701,15 @@ export class DynamicTree {
   private build(lo: number, hi: number): number {
     const leaves = this.buildLeaves;
     if (hi - lo === 1) return leaves[lo];
-    // Centres are compared doubled (min + max) to avoid a multiplication.
-    const box = this.box;
+    const centre = this.centre;
     let cMinX = Number.POSITIVE_INFINITY;
     let cMinY = Number.POSITIVE_INFINITY;
     let cMaxX = Number.NEGATIVE_INFINITY;
     let cMaxY = Number.NEGATIVE_INFINITY;
     for (let i = lo; i < hi; i++) {
-      const o = 4 * leaves[i];
-      const cx = box[o] + box[o + 2];
-      const cy = box[o + 1] + box[o + 3];
+      const o = 2 * leaves[i];
+      const cx = centre[o];
+      const cy = centre[o + 1];
       cMinX = Math.min(cMinX, cx);
       cMaxX = Math.max(cMaxX, cx);
       cMinY = Math.min(cMinY, cy);
@@ -656,15 +731,14 @@ export class DynamicTree {
   /** Quickselect on `buildLeaves[l..r]` so that position k holds the k-th smallest centre on the axis. */
   private selectByCentre(l: number, r: number, k: number, axis: number): void {
     const leaves = this.buildLeaves;
-    const box = this.box;
+    const centre = this.centre;
     while (l < r) {
-      const p = 4 * leaves[(l + r) >> 1] + axis;
-      const pivot = box[p] + box[p + 2];
+      const pivot = centre[2 * leaves[(l + r) >> 1] + axis];
       let i = l;
       let j = r;
       while (i <= j) {
-        while (box[4 * leaves[i] + axis] + box[4 * leaves[i] + axis + 2] < pivot) i++;
-        while (box[4 * leaves[j] + axis] + box[4 * leaves[j] + axis + 2] > pivot) j--;
+        while (centre[2 * leaves[i] + axis] < pivot) i++;
+        while (centre[2 * leaves[j] + axis] > pivot) j--;
         if (i <= j) {
           const t = leaves[i];
           leaves[i++] = leaves[j];
