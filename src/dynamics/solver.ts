@@ -184,7 +184,10 @@ export function solve(core: WorldCore, dt: number): void {
     if (coupled) tree.project(state, treeBias);
     integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed);
     tree.factor(ctx);
-    tree.project(state, 0);
+    // The projection is affine, v -> P v + c, with P a projector: when nothing else acts on the tree's
+    // bodies before the next substep projects again (with the same factorization; gravity and damping
+    // only add and scale), P (P v + g) = P (v + g), and this projection would change nothing then.
+    if (coupled || i === subSteps - 1) tree.project(state, 0);
     hinges.solve(state, jointSoft, false);
     for (let j = 0; j < iterativeCount; j++) {
       iterative[j].solve(ctx, false);
