@@ -151,9 +151,8 @@ export function solve(core: WorldCore, dt: number): void {
   const tree = core.jointTree;
   const hinges = core.hingeBatch;
   prepareJoints(core, h);
-  const joints = hinges.otherActive;
-  const jointCount = joints.length;
   const treeBias = ctx.jointSoftness.biasRate;
+  // the joints the tree alone solves are not warm started (see JointTree.project)
   const iterative = hinges.otherIterative;
   const iterativeCount = iterative.length;
   const jointSoft = ctx.jointSoftness;
@@ -169,32 +168,32 @@ export function solve(core: WorldCore, dt: number): void {
   for (let i = 0; i < subSteps; i++) {
     integrateVelocities(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, settings.maxLinearSpeed);
     hinges.warmStart(state, ctx.warmSpeedLimit, ctx.warmTurnLimit);
-    for (let j = 0; j < jointCount; j++) joints[j].warmStartGuarded(ctx);
+    for (let j = 0; j < iterativeCount; j++) iterative[j].warmStartGuarded(ctx);
     warmStartContacts(cc, state);
     // positions change only in integratePositions: the last substep's relax factorization still holds
     if (i === 0) tree.factor(ctx);
-    tree.project(state, treeBias);
+    tree.project(state, treeBias, true);
     hinges.solve(state, jointSoft, true);
     for (let j = 0; j < iterativeCount; j++) {
       iterative[j].solve(ctx, true);
       // a row weighed with the tree's mass moved only its own two bodies: the tree carries it on
-      if (iterative[j].treeAxialMass > 0) tree.project(state, treeBias);
+      if (iterative[j].treeAxialMass > 0) tree.project(state, treeBias, false);
     }
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
-    if (coupled) tree.project(state, treeBias);
+    if (coupled) tree.project(state, treeBias, false);
     integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed);
     tree.factor(ctx);
     // The projection is affine, v -> P v + c, with P a projector: when nothing else acts on the tree's
     // bodies before the next substep projects again (with the same factorization; gravity and damping
     // only add and scale), P (P v + g) = P (v + g), and this projection would change nothing then.
-    if (coupled || i === subSteps - 1) tree.project(state, 0);
+    if (coupled || i === subSteps - 1) tree.project(state, 0, false);
     hinges.solve(state, jointSoft, false);
     for (let j = 0; j < iterativeCount; j++) {
       iterative[j].solve(ctx, false);
-      if (iterative[j].treeAxialMass > 0) tree.project(state, 0);
+      if (iterative[j].treeAxialMass > 0) tree.project(state, 0, false);
     }
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
-    if (coupled) tree.project(state, 0);
+    if (coupled) tree.project(state, 0, false);
   }
   hinges.store(ctx);
   applyRestitution(cc, state, settings.restitutionThreshold);

@@ -144,8 +144,8 @@ export class DistanceJoint extends Joint {
   }
 
   /** @internal */
-  override treeAddImpulse(solution: Float64Array, o: number): void {
-    this.impulse -= solution[o];
+  override treeAddImpulse(solution: Float64Array, o: number, keep: number): void {
+    this.impulse = keep * this.impulse - solution[o];
   }
 
   /** @internal */

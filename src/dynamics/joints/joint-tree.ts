@@ -69,6 +69,11 @@ export class JointTree {
   private slotB = new Int32Array(16);
   /** per tree joint: rows, Jacobian blocks (rows × 3, stride 3) for A and B, position errors */
   private rows = new Int32Array(16);
+  /**
+   * per tree joint: 1 when it also iterates (a limit, motor or spring row) and is warm started with
+   * all its impulses, 0 when the tree alone solves it (see project)
+   */
+  private warmed = new Uint8Array(16);
   private jA = new Float64Array(16 * 9);
   private jB = new Float64Array(16 * 9);
   private err = new Float64Array(16 * 3);
@@ -343,6 +348,7 @@ export class JointTree {
     if (this.rows.length < count) {
       const cap = Math.max(2 * this.rows.length, count);
       this.rows = growI32(this.rows, cap);
+      this.warmed = growU8(this.warmed, cap);
       this.slotA = growI32(this.slotA, cap);
       this.slotB = growI32(this.slotB, cap);
       this.rowNode = growI32(this.rowNode, cap);
@@ -402,6 +408,7 @@ export class JointTree {
       const joint = this.joints[j];
       const rows = joint.treeRows();
       this.rows[j] = rows;
+      this.warmed[j] = joint.iteratesInTree() ? 1 : 0;
       const a = joint.bodyA.slot;
       const b = joint.bodyB.slot;
       this.slotA[j] = a;
@@ -748,8 +755,12 @@ export class JointTree {
   /**
    * Projects the velocities onto the tree rows with the last factorization: afterwards J v = 0, or
    * with `biasRate` > 0, J v = -biasRate C (the position error shrinks at that rate).
+   *
+   * A joint the tree alone solves is not warm started: the projection would take that impulse out
+   * again exactly (it removes every velocity change along the tree rows). The substep's `first`
+   * projection then finds its whole impulse, which replaces the one it held; later ones add to it.
    */
-  project(state: Float64Array, biasRate: number): void {
+  project(state: Float64Array, biasRate: number, first: boolean): void {
     const count = this.jointCount;
     if (count === 0) return;
     const x = this.x;
@@ -810,7 +821,7 @@ export class JointTree {
     }
     for (let j = 0; j < count; j++) {
       const o = Block.ROWS * this.rowNode[j] + this.rowOffset[j];
-      this.joints[j].treeAddImpulse(x, o);
+      this.joints[j].treeAddImpulse(x, o, first && this.warmed[j] === 0 ? 0 : 1);
     }
   }
 

@@ -233,9 +233,10 @@ export abstract class Joint {
 
   /**
    * @internal Adds the tree solver's impulse on the tree rows: minus `solution[o..]` (the rows'
-   * multipliers; an array and an index, as doubles passed to a call would be boxed).
+   * multipliers; an array and an index, as doubles passed to a call would be boxed), to `keep` (1 or
+   * 0) times the impulse accumulated so far.
    */
-  treeAddImpulse(_solution: Float64Array, _o: number): void {}
+  treeAddImpulse(_solution: Float64Array, _o: number, _keep: number): void {}
 
   /**
    * Writes the angular row (B keeps its angle to A) as row `row` of tree joint `j`: its error is

@@ -110,9 +110,9 @@ export class PrismaticJoint extends SliderJoint {
   }
 
   /** @internal */
-  override treeAddImpulse(solution: Float64Array, o: number): void {
-    this.perpImpulse -= solution[o];
-    this.angularImpulse -= solution[o + 1];
+  override treeAddImpulse(solution: Float64Array, o: number, keep: number): void {
+    this.perpImpulse = keep * this.perpImpulse - solution[o];
+    this.angularImpulse = keep * this.angularImpulse - solution[o + 1];
   }
 
   /** @internal */

@@ -160,9 +160,9 @@ export class RevoluteJoint extends Joint {
   }
 
   /** @internal */
-  override treeAddImpulse(solution: Float64Array, o: number): void {
-    this.linearX -= solution[o];
-    this.linearY -= solution[o + 1];
+  override treeAddImpulse(solution: Float64Array, o: number, keep: number): void {
+    this.linearX = keep * this.linearX - solution[o];
+    this.linearY = keep * this.linearY - solution[o + 1];
   }
 
   /** @internal */

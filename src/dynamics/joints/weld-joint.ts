@@ -87,10 +87,10 @@ export class WeldJoint extends Joint {
   }
 
   /** @internal */
-  override treeAddImpulse(solution: Float64Array, o: number): void {
-    this.linearX -= solution[o];
-    this.linearY -= solution[o + 1];
-    this.angularImpulse -= solution[o + 2];
+  override treeAddImpulse(solution: Float64Array, o: number, keep: number): void {
+    this.linearX = keep * this.linearX - solution[o];
+    this.linearY = keep * this.linearY - solution[o + 1];
+    this.angularImpulse = keep * this.angularImpulse - solution[o + 2];
   }
 
   /** @internal */

@@ -93,8 +93,8 @@ export class WheelJoint extends SliderJoint {
   }
 
   /** @internal */
-  override treeAddImpulse(solution: Float64Array, o: number): void {
-    this.perpImpulse -= solution[o];
+  override treeAddImpulse(solution: Float64Array, o: number, keep: number): void {
+    this.perpImpulse = keep * this.perpImpulse - solution[o];
   }
 
   /** @internal */
