@@ -1,3 +1,4 @@
+import { growU8 } from '../core/grow';
 import type { Bounds } from '../math/aabb';
 import type { IntList } from './int-list';
 
@@ -121,8 +122,8 @@ export class DynamicTree {
     this.setBox(id, minX, minY, maxX, maxY);
     const box = this.box;
     for (let p = this.parent[id]; p !== Node.NULL; p = this.parent[p]) {
+      if (this.contains(p, id)) break;
       const o = 4 * p;
-      if (box[o] <= minX && box[o + 1] <= minY && box[o + 2] >= maxX && box[o + 3] >= maxY) break;
       box[o] = Math.min(box[o], minX);
       box[o + 1] = Math.min(box[o + 1], minY);
       box[o + 2] = Math.max(box[o + 2], maxX);
@@ -456,9 +457,7 @@ export class DynamicTree {
     this.child2 = grown(this.child2, capacity);
     this.height = grown(this.height, capacity);
     this.userData = grown(this.userData, capacity);
-    const isMoved = new Uint8Array(capacity);
-    isMoved.set(this.isMoved);
-    this.isMoved = isMoved;
+    this.isMoved = growU8(this.isMoved, capacity);
     this.linkFree(old, capacity);
   }
 
