@@ -1,4 +1,4 @@
-import { growI32 } from '../core/grow';
+import { growF64, growI32 } from '../core/grow';
 import {
   CONTACT_DAMPING_RATIO,
   CONTACT_HERTZ,
@@ -6,7 +6,13 @@ import {
   JOINT_HERTZ,
   MAX_ROTATION_PER_SUBSTEP,
 } from '../core/settings';
-import { clampVelocity, integratePositions, integrateVelocities } from './body-solver';
+import {
+  clampVelocity,
+  integratePositions,
+  integrateVelocities,
+  prepareVelocityUpdate,
+  V,
+} from './body-solver';
 import { BodyFlag, BodyKind, type BodyStore, S } from './body-store';
 import {
   applyRestitution,
@@ -165,8 +171,12 @@ export function solve(core: WorldCore, dt: number): void {
   const settings = core.settings;
   // the tree projects again after the others only if they act on its bodies
   const coupled = tree.isCoupled(cc.ids, cc.count);
+  if (core.velocityUpdate.length < awakeCount * V.STRIDE)
+    core.velocityUpdate = growF64(core.velocityUpdate, 2 * awakeCount * V.STRIDE);
+  const update = core.velocityUpdate;
+  prepareVelocityUpdate(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, update);
   for (let i = 0; i < subSteps; i++) {
-    integrateVelocities(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, settings.maxLinearSpeed);
+    integrateVelocities(bodies, awake, awakeCount, update, h, settings.maxLinearSpeed);
     hinges.warmStart(state, ctx.warmSpeedLimit, ctx.warmTurnLimit);
     for (let j = 0; j < iterativeCount; j++) iterative[j].warmStartGuarded(ctx);
     warmStartContacts(cc, state);
@@ -181,7 +191,7 @@ export function solve(core: WorldCore, dt: number): void {
     }
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, treeBias, false);
-    integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed);
+    integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed, i === subSteps - 1);
     tree.factor(ctx);
     // The projection is affine, v -> P v + c, with P a projector: when nothing else acts on the tree's
     // bodies before the next substep projects again (with the same factorization; gravity and damping
@@ -280,68 +290,88 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     core.settings.maxLinearSpeed,
     MAX_ROTATION_PER_SUBSTEP / (dt / core.subSteps),
   );
+  // the columns in locals: the calls in the loop would have them loaded again at every body
+  const colQc = bodies.qc;
+  const colQs = bodies.qs;
+  const colCx = bodies.cx;
+  const colCy = bodies.cy;
+  const colLcx = bodies.lcx;
+  const colLcy = bodies.lcy;
+  const colPx = bodies.px;
+  const colPy = bodies.py;
+  const colFx = bodies.fx;
+  const colFy = bodies.fy;
+  const colTorque = bodies.torque;
+  const colFlags = bodies.flags;
+  const colMaxExtent = bodies.maxExtent;
+  const colSleepTime = bodies.sleepTime;
+  const colMinExtent = bodies.minExtent;
+  const colKind = bodies.kind;
+  const colShapeHead = bodies.shapeHead;
+  const shapeNext = shapes.next;
+  const proxyKey = shapes.proxyKey;
   for (let i = 0, n = core.awakeCount; i < n; i++) {
     const b = awake[i];
     const s = b * S.STRIDE;
     const dqc = state[s + S.DQC];
     const dqs = state[s + S.DQS];
-    const q0c = bodies.qc[b];
-    const q0s = bodies.qs[b];
+    const q0c = colQc[b];
+    const q0s = colQs[b];
     let qc = dqc * q0c - dqs * q0s;
     let qs = dqs * q0c + dqc * q0s;
     const inv = 1 / Math.sqrt(qc * qc + qs * qs);
     qc *= inv;
     qs *= inv;
-    const cx = bodies.cx[b] + state[s + S.DPX];
-    const cy = bodies.cy[b] + state[s + S.DPY];
-    const lx = bodies.lcx[b];
-    const ly = bodies.lcy[b];
-    bodies.qc[b] = qc;
-    bodies.qs[b] = qs;
-    bodies.cx[b] = cx;
-    bodies.cy[b] = cy;
-    bodies.px[b] = cx - (qc * lx - qs * ly);
-    bodies.py[b] = cy - (qs * lx + qc * ly);
+    const cx = colCx[b] + state[s + S.DPX];
+    const cy = colCy[b] + state[s + S.DPY];
+    const lx = colLcx[b];
+    const ly = colLcy[b];
+    colQc[b] = qc;
+    colQs[b] = qs;
+    colCx[b] = cx;
+    colCy[b] = cy;
+    colPx[b] = cx - (qc * lx - qs * ly);
+    colPy[b] = cy - (qs * lx + qc * ly);
     const c0x = cx - state[s + S.DPX];
     const c0y = cy - state[s + S.DPY];
     state[s + S.DPX] = 0;
     state[s + S.DPY] = 0;
     state[s + S.DQC] = 1;
     state[s + S.DQS] = 0;
-    bodies.fx[b] = 0;
-    bodies.fy[b] = 0;
-    bodies.torque[b] = 0;
+    colFx[b] = 0;
+    colFy[b] = 0;
+    colTorque[b] = 0;
 
     const vx = state[s + S.VX];
     const vy = state[s + S.VY];
     const w = state[s + S.W];
-    if (enableSleep && (bodies.flags[b] & BodyFlag.ALLOW_SLEEP) !== 0) {
-      const speed = Math.sqrt(vx * vx + vy * vy) + bodies.maxExtent[b] * Math.abs(w);
-      bodies.sleepTime[b] = speed > sleepSpeed ? 0 : bodies.sleepTime[b] + dt;
+    if (enableSleep && (colFlags[b] & BodyFlag.ALLOW_SLEEP) !== 0) {
+      const speed = Math.sqrt(vx * vx + vy * vy) + colMaxExtent[b] * Math.abs(w);
+      colSleepTime[b] = speed > sleepSpeed ? 0 : colSleepTime[b] + dt;
     } else {
-      bodies.sleepTime[b] = 0;
+      colSleepTime[b] = 0;
     }
 
-    for (let sh = bodies.shapeHead[b]; sh !== -1; sh = shapes.next[sh]) core.refreshShapeBounds(sh);
+    for (let sh = colShapeHead[b]; sh !== -1; sh = shapeNext[sh]) core.refreshShapeBounds(sh);
     // a body that moved more than half its thickness this step could have passed through a wall
     if (
       continuous &&
-      bodies.kind[b] === BodyKind.DYNAMIC &&
-      (Math.sqrt(vx * vx + vy * vy) + bodies.maxExtent[b] * Math.abs(w)) * dt > 0.5 * bodies.minExtent[b]
+      colKind[b] === BodyKind.DYNAMIC &&
+      (Math.sqrt(vx * vx + vy * vy) + colMaxExtent[b] * Math.abs(w)) * dt > 0.5 * colMinExtent[b]
     ) {
       sweepStart[0] = c0x;
       sweepStart[1] = c0y;
       sweepStart[2] = q0c;
       sweepStart[3] = q0s;
-      if ((bodies.flags[b] & BodyFlag.BULLET) !== 0) {
+      if ((colFlags[b] & BodyFlag.BULLET) !== 0) {
         // bullets also sweep against moving bodies, once those are final: see solveBullets
         deferBullet(b);
         continue;
       }
       solveContinuous(core, b);
     }
-    for (let sh = bodies.shapeHead[b]; sh !== -1; sh = shapes.next[sh]) {
-      broad.moveProxy(shapes.proxyKey[sh], shapes, sh);
+    for (let sh = colShapeHead[b]; sh !== -1; sh = shapeNext[sh]) {
+      broad.moveProxy(proxyKey[sh], shapes, sh);
     }
   }
   if (continuous) solveBullets(core);

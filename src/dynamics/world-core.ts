@@ -63,6 +63,8 @@ export class WorldCore {
   /** awake non-static bodies of the current step, by ascending slot */
   awake = new Int32Array(64);
   awakeCount = 0;
+  /** per awake body, the step's constant velocity update (see prepareVelocityUpdate) */
+  velocityUpdate = new Float64Array(0);
   gravityX = 0;
   gravityY = -10;
   subSteps = 4;
