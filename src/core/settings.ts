@@ -7,6 +7,11 @@ export interface Settings {
   linearSlop: number;
   /** contact points are created this far apart (speculative contacts) */
   speculativeDistance: number;
+  /**
+   * a contact's manifold is kept while its shapes moved less than this relative to each other since it
+   * was computed (settled piles: most contacts)
+   */
+  manifoldTolerance: number;
   /** fat AABB margin of moving proxies in the broad phase */
   aabbMargin: number;
   /** largest speed at which the soft contact pushes overlapping shapes apart */
@@ -33,6 +38,7 @@ export function makeSettings(lengthUnitsPerMeter: number): Settings {
   return {
     linearSlop,
     speculativeDistance: 4 * linearSlop,
+    manifoldTolerance: linearSlop / 500,
     aabbMargin: 0.1 * u,
     contactPushMaxSpeed: 3 * u,
     sleepSpeed: 0.05 * u,

@@ -6,6 +6,33 @@ export enum ContactFlag {
   SENSOR = 2,
   /** touching began or ended during this step's narrow phase (cleared each step) */
   STARTED = 4,
+  /** the contact's manifold record holds the last computed manifold and the pose it was computed at */
+  CACHED = 8,
+}
+
+/**
+ * Layout of a contact's record in `ContactStore.manifoldCache` (doubles): the bodies' relative pose
+ * when the manifold was last computed (the nearer-to-its-origin shape's body seen from the other's
+ * frame), that shape's extent, which frame it is, and the manifold's normal and points in body A's
+ * frame. While the relative pose stays within the world's manifoldTolerance of it, no point of the two
+ * shapes moved further than that relative to the other, and the narrow phase keeps the manifold.
+ */
+export enum MC {
+  TX = 0,
+  TY = 1,
+  RC = 2,
+  RS = 3,
+  /** largest distance of the moving shape's points from its body's origin */
+  EXTENT = 4,
+  /** 0: body B seen from A's frame, 1: A from B's */
+  FRAME = 5,
+  NX = 6,
+  NY = 7,
+  X0 = 8,
+  Y0 = 9,
+  X1 = 10,
+  Y1 = 11,
+  STRIDE = 12,
 }
 
 /**
@@ -37,6 +64,8 @@ export class ContactStore extends SlotStore {
   approachSpeed = new Float64Array(0);
   /** edge that separated the pair's cores at the last narrow phase (a speed hint; see manifold-polygon) */
   separatingAxis = new Uint8Array(0);
+  /** per contact, the manifold kept with the pose it holds for (see MC; valid with ContactFlag.CACHED) */
+  manifoldCache = new Float64Array(0);
 
   protected growColumns(capacity: number): void {
     this.shapeA = growI32(this.shapeA, capacity);
@@ -58,6 +87,7 @@ export class ContactStore extends SlotStore {
     this.maxNormalImpulse = growF64(this.maxNormalImpulse, capacity * 2);
     this.approachSpeed = growF64(this.approachSpeed, capacity * 2);
     this.separatingAxis = growU8(this.separatingAxis, capacity);
+    this.manifoldCache = growF64(this.manifoldCache, capacity * MC.STRIDE);
   }
 
   protected resetSlot(slot: number): void {

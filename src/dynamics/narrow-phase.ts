@@ -10,7 +10,7 @@ import {
 import { Pack } from '../geometry/packed';
 import type { Manifold, ManifoldPoint } from '../geometry/types';
 import { BodyFlag, BodyKind } from './body-store';
-import { ContactFlag } from './contact-store';
+import { ContactFlag, MC } from './contact-store';
 import { ShapeFlag, shouldShapesCollide } from './shape-store';
 import type { WorldCore } from './world-core';
 
@@ -86,6 +86,13 @@ export function updateContacts(core: WorldCore): void {
   const proxyKey = shapes.proxyKey;
   const packed = shapes.packed;
   const points = manifold.points;
+  const bodyPx = bodies.px;
+  const bodyPy = bodies.py;
+  const bodyQc = bodies.qc;
+  const bodyQs = bodies.qs;
+  const cache = contacts.manifoldCache;
+  const originExtent = shapes.originExtent;
+  const tolerance = core.settings.manifoldTolerance;
   for (let c = 0, n = contacts.slotCount; c < n; c++) {
     if (alive[c] === 0) continue;
     const bodyA = contactBodyA[c];
@@ -107,7 +114,7 @@ export function updateContacts(core: WorldCore): void {
       core.destroyContact(c, true);
       continue;
     }
-    const flags = contactFlags[c];
+    let flags = contactFlags[c];
     const sensor = (flags & ContactFlag.SENSOR) !== 0;
     const k0 = c * 2;
     const reach = sensor ? 0 : speculative;
@@ -115,7 +122,50 @@ export function updateContacts(core: WorldCore): void {
       // the shapes are further apart than the boxes, and a point's separation is at most the vertex-pair
       // tolerance below the shapes' distance (manifold-polygon.ts): the manifold would be empty
       manifold.pointCount = 0;
+      flags &= ~ContactFlag.CACHED;
     } else {
+      const ax = bodyPx[bodyA];
+      const ay = bodyPy[bodyA];
+      const ac = bodyQc[bodyA];
+      const as = bodyQs[bodyA];
+      const bx = bodyPx[bodyB];
+      const by = bodyPy[bodyB];
+      const bc = bodyQc[bodyB];
+      const bs = bodyQs[bodyB];
+      // B's rotation relative to A's
+      const rc = ac * bc + as * bs;
+      const rs = ac * bs - as * bc;
+      const o = c * MC.STRIDE;
+      if ((flags & ContactFlag.CACHED) !== 0) {
+        // how far any point of the moving shape moved, relative to the other, since the manifold was
+        // computed: at most the translation plus the extent times the rotation's change
+        const fromA = cache[o + MC.FRAME] === 0;
+        const fc = fromA ? ac : bc;
+        const fs = fromA ? as : bs;
+        const dx = fromA ? bx - ax : ax - bx;
+        const dy = fromA ? by - ay : ay - by;
+        const moved =
+          Math.abs(fc * dx + fs * dy - cache[o + MC.TX]) +
+          Math.abs(fc * dy - fs * dx - cache[o + MC.TY]) +
+          cache[o + MC.EXTENT] * (Math.abs(rc - cache[o + MC.RC]) + Math.abs(rs - cache[o + MC.RS]));
+        if (moved < tolerance) {
+          // the manifold holds: carried along with body A, separations and impulses kept
+          const count = pointCount[c];
+          if (!sensor && count > 0) {
+            const lnx = cache[o + MC.NX];
+            const lny = cache[o + MC.NY];
+            normalX[c] = ac * lnx - as * lny;
+            normalY[c] = as * lnx + ac * lny;
+            for (let j = 0; j < count; j++) {
+              const lx = cache[o + MC.X0 + 2 * j];
+              const ly = cache[o + MC.Y0 + 2 * j];
+              pointX[k0 + j] = ax + ac * lx - as * ly;
+              pointY[k0 + j] = ay + as * lx + ac * ly;
+            }
+          }
+          continue;
+        }
+      }
       setReferenceHint(pointCount[c] > 0 ? referenceOwnerOfId(pointId[k0]) : -1);
       setSeparatingAxisHint(separatingAxis[c]);
       collideReach[0] = reach;
@@ -130,7 +180,34 @@ export function updateContacts(core: WorldCore): void {
         manifold,
       );
       separatingAxis[c] = lastSeparatingAxis();
+      // keep the manifold in A's frame with the pose, seen from the body whose shape reaches less far
+      // from its origin (a small box on a long ground: the box's turn moves little)
+      const extentA = originExtent[shapeA];
+      const extentB = originExtent[shapeB];
+      const fromA = extentB <= extentA;
+      const fc = fromA ? ac : bc;
+      const fs = fromA ? as : bs;
+      const dx = fromA ? bx - ax : ax - bx;
+      const dy = fromA ? by - ay : ay - by;
+      cache[o + MC.TX] = fc * dx + fs * dy;
+      cache[o + MC.TY] = fc * dy - fs * dx;
+      cache[o + MC.RC] = rc;
+      cache[o + MC.RS] = rs;
+      cache[o + MC.EXTENT] = fromA ? extentB : extentA;
+      cache[o + MC.FRAME] = fromA ? 0 : 1;
+      const nx = manifold.normalX;
+      const ny = manifold.normalY;
+      cache[o + MC.NX] = ac * nx + as * ny;
+      cache[o + MC.NY] = ac * ny - as * nx;
+      for (let j = 0; j < manifold.pointCount; j++) {
+        const px = points[j].x - ax;
+        const py = points[j].y - ay;
+        cache[o + MC.X0 + 2 * j] = ac * px + as * py;
+        cache[o + MC.Y0 + 2 * j] = ac * py - as * px;
+      }
+      flags |= ContactFlag.CACHED;
     }
+    contactFlags[c] = flags;
     const count = manifold.pointCount;
     if (!sensor) {
       // Carry the impulses of surviving points over (warm starting): same feature id, or else the old

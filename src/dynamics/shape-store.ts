@@ -22,6 +22,8 @@ export class ShapeStore extends SlotStore {
   restitution = new Float64Array(0);
   /** rounding radius of the geometry (circle and capsule radius, polygon radius, 0 for segments) */
   radius = new Float64Array(0);
+  /** largest distance of any point of the shape from its body's origin */
+  originExtent = new Float64Array(0);
   categoryBits = new Uint32Array(0);
   maskBits = new Uint32Array(0);
   groupIndex = new Int32Array(0);
@@ -44,6 +46,7 @@ export class ShapeStore extends SlotStore {
     this.friction = growF64(this.friction, capacity);
     this.restitution = growF64(this.restitution, capacity);
     this.radius = growF64(this.radius, capacity);
+    this.originExtent = growF64(this.originExtent, capacity);
     this.categoryBits = growU32(this.categoryBits, capacity);
     this.maskBits = growU32(this.maskBits, capacity);
     this.groupIndex = growI32(this.groupIndex, capacity);

@@ -10,6 +10,7 @@ import {
   fail,
 } from '../core/errors';
 import { readSnapshot, writeSnapshot } from '../debug/snapshot';
+import { maxExtentFrom } from '../geometry/extent';
 import { Pack, packGeometry } from '../geometry/packed';
 import { type Geometry, isGeometry, ShapeKind } from '../geometry/types';
 import type { AABB } from '../math/aabb';
@@ -358,6 +359,7 @@ export class World {
     shapes.friction[s] = d.friction;
     shapes.restitution[s] = d.restitution;
     shapes.radius[s] = geometry.kind === ShapeKind.SEGMENT ? 0 : geometry.radius;
+    shapes.originExtent[s] = maxExtentFrom(geometry, 0, 0);
     shapes.categoryBits[s] = d.filter.categoryBits;
     shapes.maskBits[s] = d.filter.maskBits;
     shapes.groupIndex[s] = d.filter.groupIndex;
