@@ -319,7 +319,10 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     const q0s = colQs[b];
     let qc = dqc * q0c - dqs * q0s;
     let qs = dqs * q0c + dqc * q0s;
-    const inv = 1 / Math.sqrt(qc * qc + qs * qs);
+    // both factors are unit to a few ulps (integratePositions renormalised the step's turn): one
+    // Newton step for 1 / sqrt(n2) about 1 takes the product back to unit length to rounding,
+    // without the square root and division whose latency stalled this loop
+    const inv = 0.5 * (3 - (qc * qc + qs * qs));
     qc *= inv;
     qs *= inv;
     const cx = colCx[b] + state[s + S.DPX];

@@ -191,10 +191,9 @@ export class HingeBatch {
     const ids = this.ids;
     // read in every call, so that both passes give the loads type feedback (a load that only the
     // bias pass made left the compiled code without it: deoptimised, the function stayed unoptimised)
-    const softBiasRate = soft.biasRate;
+    const biasRate = soft.biasRate;
     const softMassScale = soft.massScale;
     const softImpulseScale = soft.impulseScale;
-    const biasRate = useBias ? softBiasRate : 0;
     const massScale = useBias ? softMassScale : 1;
     const impulseScale = useBias ? softImpulseScale : 0;
     for (let i = 0, n = this.count; i < n; i++) {
@@ -213,16 +212,19 @@ export class HingeBatch {
       s = state[sb + S.DQS];
       const rBx = c * d[base + H.RBX0] - s * d[base + H.RBY0];
       const rBy = s * d[base + H.RBX0] + c * d[base + H.RBY0];
-      const sepX = state[sb + S.DPX] - state[sa + S.DPX] + d[base + H.DCX] + rBx - rAx;
-      const sepY = state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy;
       let vAx = state[sa + S.VX];
       let vAy = state[sa + S.VY];
       let wA = state[sa + S.W];
       let vBx = state[sb + S.VX];
       let vBy = state[sb + S.VY];
       let wB = state[sb + S.W];
-      const bx = vBx - wB * rBy - vAx + wA * rAy + biasRate * sepX;
-      const by = vBy + wB * rBx - vAy - wA * rAx + biasRate * sepY;
+      let bx = vBx - wB * rBy - vAx + wA * rAy;
+      let by = vBy + wB * rBx - vAy - wA * rAx;
+      // the separation only feeds the bias: the relax pass has none, and skips it
+      if (useBias) {
+        bx += biasRate * (state[sb + S.DPX] - state[sa + S.DPX] + d[base + H.DCX] + rBx - rAx);
+        by += biasRate * (state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy);
+      }
       const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
       const k12 = -rAy * rAx * iA - rBy * rBx * iB;
       const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
