@@ -12,27 +12,24 @@ export enum ContactFlag {
 
 /**
  * Layout of a contact's record in `ContactStore.manifoldCache` (doubles): the bodies' relative pose
- * when the manifold was last computed (the nearer-to-its-origin shape's body seen from the other's
- * frame), that shape's extent, which frame it is, and the manifold's normal and points in body A's
- * frame. While the relative pose stays within the world's manifoldTolerance of it, no point of the two
- * shapes moved further than that relative to the other, and the narrow phase keeps the manifold.
+ * when the manifold was last computed, and the manifold's normal and points in body A's frame. The
+ * pose is that of the body whose shape reaches less far from its origin, seen from the other's frame
+ * (the shapes fix which one: see updateContacts). While the pose stays within the world's
+ * manifoldTolerance of it, no point of the two shapes moved further than that relative to the other,
+ * and the narrow phase keeps the manifold.
  */
 export enum MC {
   TX = 0,
   TY = 1,
   RC = 2,
   RS = 3,
-  /** largest distance of the moving shape's points from its body's origin */
-  EXTENT = 4,
-  /** 0: body B seen from A's frame, 1: A from B's */
-  FRAME = 5,
-  NX = 6,
-  NY = 7,
-  X0 = 8,
-  Y0 = 9,
-  X1 = 10,
-  Y1 = 11,
-  STRIDE = 12,
+  NX = 4,
+  NY = 5,
+  X0 = 6,
+  Y0 = 7,
+  X1 = 8,
+  Y1 = 9,
+  STRIDE = 10,
 }
 
 /**

@@ -132,22 +132,28 @@ export function updateContacts(core: WorldCore): void {
       const by = bodyPy[bodyB];
       const bc = bodyQc[bodyB];
       const bs = bodyQs[bodyB];
-      // B's rotation relative to A's
+      // the pose of the body whose shape reaches less far from its origin (a small box on a long
+      // ground: the box's turn moves little), seen from the other's frame, and the rotation of B
+      // relative to A (for either, a change of the pair bounds the change of the other)
+      const extentA = originExtent[shapeA];
+      const extentB = originExtent[shapeB];
+      const fromA = extentB <= extentA;
+      const fc = fromA ? ac : bc;
+      const fs = fromA ? as : bs;
+      const dx = fromA ? bx - ax : ax - bx;
+      const dy = fromA ? by - ay : ay - by;
+      const tx = fc * dx + fs * dy;
+      const ty = fc * dy - fs * dx;
       const rc = ac * bc + as * bs;
       const rs = ac * bs - as * bc;
       const o = c * MC.STRIDE;
       if ((flags & ContactFlag.CACHED) !== 0) {
-        // how far any point of the moving shape moved, relative to the other, since the manifold was
-        // computed: at most the translation plus the extent times the rotation's change
-        const fromA = cache[o + MC.FRAME] === 0;
-        const fc = fromA ? ac : bc;
-        const fs = fromA ? as : bs;
-        const dx = fromA ? bx - ax : ax - bx;
-        const dy = fromA ? by - ay : ay - by;
+        // how far any point of that shape moved, relative to the other, since the manifold was
+        // computed: at most the translation plus its extent times the rotation's change
         const moved =
-          Math.abs(fc * dx + fs * dy - cache[o + MC.TX]) +
-          Math.abs(fc * dy - fs * dx - cache[o + MC.TY]) +
-          cache[o + MC.EXTENT] * (Math.abs(rc - cache[o + MC.RC]) + Math.abs(rs - cache[o + MC.RS]));
+          Math.abs(tx - cache[o + MC.TX]) +
+          Math.abs(ty - cache[o + MC.TY]) +
+          (fromA ? extentB : extentA) * (Math.abs(rc - cache[o + MC.RC]) + Math.abs(rs - cache[o + MC.RS]));
         if (moved < tolerance) {
           // the manifold holds: carried along with body A, separations and impulses kept
           const count = pointCount[c];
@@ -180,21 +186,11 @@ export function updateContacts(core: WorldCore): void {
         manifold,
       );
       separatingAxis[c] = lastSeparatingAxis();
-      // keep the manifold in A's frame with the pose, seen from the body whose shape reaches less far
-      // from its origin (a small box on a long ground: the box's turn moves little)
-      const extentA = originExtent[shapeA];
-      const extentB = originExtent[shapeB];
-      const fromA = extentB <= extentA;
-      const fc = fromA ? ac : bc;
-      const fs = fromA ? as : bs;
-      const dx = fromA ? bx - ax : ax - bx;
-      const dy = fromA ? by - ay : ay - by;
-      cache[o + MC.TX] = fc * dx + fs * dy;
-      cache[o + MC.TY] = fc * dy - fs * dx;
+      // keep the manifold in A's frame with the pose it holds for
+      cache[o + MC.TX] = tx;
+      cache[o + MC.TY] = ty;
       cache[o + MC.RC] = rc;
       cache[o + MC.RS] = rs;
-      cache[o + MC.EXTENT] = fromA ? extentB : extentA;
-      cache[o + MC.FRAME] = fromA ? 0 : 1;
       const nx = manifold.normalX;
       const ny = manifold.normalY;
       cache[o + MC.NX] = ac * nx + as * ny;

@@ -62,7 +62,7 @@ function compare(world: World, poses: Poses, out: Deviation): void {
     const a = contacts.bodyA[c];
     const b = contacts.bodyB[c];
     const o = c * MC.STRIDE;
-    const fromA = cache[o + MC.FRAME] === 0;
+    const fromA = shapes.originExtent[contacts.shapeB[c]] <= shapes.originExtent[contacts.shapeA[c]];
     const [f, g] = fromA ? [a, b] : [b, a];
     const dx = poses.px[g] - poses.px[f];
     const dy = poses.py[g] - poses.py[f];

@@ -189,17 +189,7 @@ export class DistanceJoint extends Joint {
       this.ux = this.sepX / len;
       this.uy = this.sepY / len;
     }
-    const total = this.impulse + this.lowerImpulse - this.upperImpulse;
-    const px = total * this.ux;
-    const py = total * this.uy;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
-    state[sa + S.VX] -= this.mA * px;
-    state[sa + S.VY] -= this.mA * py;
-    state[sa + S.W] -= this.iA * (this.rAx * py - this.rAy * px);
-    state[sb + S.VX] += this.mB * px;
-    state[sb + S.VY] += this.mB * py;
-    state[sb + S.W] += this.iB * (this.rBx * py - this.rBy * px);
+    this.apply(state, this.impulse + this.lowerImpulse - this.upperImpulse);
   }
 
   /** Applies an impulse along the axis and returns nothing; reads and writes the velocities. */
