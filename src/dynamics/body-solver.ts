@@ -1,3 +1,4 @@
+import { IndexBound } from '../core/index-bound';
 import { MAX_ROTATION_PER_SUBSTEP } from '../core/settings';
 import { BodyKind, type BodyStore, S } from './body-store';
 
@@ -58,8 +59,8 @@ export function prepareVelocityUpdate(
   const fx = bodies.fx;
   const fy = bodies.fy;
   const torque = bodies.torque;
-  for (let i = 0; i < awakeCount; i++) {
-    const b = awake[i];
+  for (let i = 0, n = awakeCount & IndexBound.MAX; i < n; i++) {
+    const b = awake[i] & IndexBound.MAX;
     if (kind[b] !== BodyKind.DYNAMIC) continue;
     const o = i * V.STRIDE;
     const m = invMass[b];
@@ -88,8 +89,8 @@ export function integrateVelocities(
   const state = bodies.state;
   const kind = bodies.kind;
   const maxW = MAX_ROTATION_PER_SUBSTEP / h;
-  for (let i = 0; i < awakeCount; i++) {
-    const b = awake[i];
+  for (let i = 0, n = awakeCount & IndexBound.MAX; i < n; i++) {
+    const b = awake[i] & IndexBound.MAX;
     if (kind[b] !== BodyKind.DYNAMIC) continue;
     const s = b * S.STRIDE;
     const o = i * V.STRIDE;
@@ -120,8 +121,8 @@ export function integratePositions(
   const state = bodies.state;
   const kind = bodies.kind;
   const maxW = MAX_ROTATION_PER_SUBSTEP / h;
-  for (let i = 0; i < awakeCount; i++) {
-    const b = awake[i];
+  for (let i = 0, n = awakeCount & IndexBound.MAX; i < n; i++) {
+    const b = awake[i] & IndexBound.MAX;
     const s = b * S.STRIDE;
     if (kind[b] === BodyKind.DYNAMIC) clampVelocity(state, s, maxLinearSpeed, maxW);
     const vx = state[s + S.VX];

@@ -1,4 +1,5 @@
 import { growF64, growI32 } from '../core/grow';
+import { IndexBound } from '../core/index-bound';
 import type { BodyStore } from './body-store';
 import { S } from './body-store';
 import type { ContactStore } from './contact-store';
@@ -152,7 +153,7 @@ export function prepareContacts(
   const friction = shapes.friction;
   const restitution = shapes.restitution;
   const radius = shapes.radius;
-  for (let i = 0; i < count; i++) {
+  for (let i = 0, n = count & IndexBound.MAX; i < n; i++) {
     const c = order[i];
     const a = contacts.bodyA[c];
     const b = contacts.bodyB[c];
@@ -259,10 +260,10 @@ export function prepareContacts(
 export function warmStartContacts(cc: ContactConstraints, state: Float64Array): void {
   const d = cc.data;
   const ids = cc.ids;
-  for (let i = 0, n = cc.count; i < n; i++) {
+  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
     const base = i * C.STRIDE;
-    const sa = ids[i * 3] * S.STRIDE;
-    const sb = ids[i * 3 + 1] * S.STRIDE;
+    const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
+    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
     const mA = d[base + C.MA];
     const iA = d[base + C.IA];
     const mB = d[base + C.MB];
@@ -326,10 +327,10 @@ export function solveContacts(
   const d = cc.data;
   const ids = cc.ids;
   const soft = cc.softness;
-  for (let i = 0, n = cc.count; i < n; i++) {
+  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
     const base = i * C.STRIDE;
-    const sa = ids[i * 3] * S.STRIDE;
-    const sb = ids[i * 3 + 1] * S.STRIDE;
+    const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
+    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
     const mA = d[base + C.MA];
     const iA = d[base + C.IA];
     const mB = d[base + C.MB];
@@ -529,13 +530,13 @@ export function solveContacts(
 export function applyRestitution(cc: ContactConstraints, state: Float64Array, threshold: number): void {
   const d = cc.data;
   const ids = cc.ids;
-  for (let i = 0, n = cc.count; i < n; i++) {
+  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
     const base = i * C.STRIDE;
     const rBase = i * R.STRIDE;
     const restitution = cc.restitution[rBase + R.RESTITUTION];
     if (restitution === 0) continue;
-    const sa = ids[i * 3] * S.STRIDE;
-    const sb = ids[i * 3 + 1] * S.STRIDE;
+    const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
+    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
     const mA = d[base + C.MA];
     const iA = d[base + C.IA];
     const mB = d[base + C.MB];
@@ -590,7 +591,7 @@ export function storeImpulses(
 ): void {
   const d = cc.data;
   const ids = cc.ids;
-  for (let i = 0, n = cc.count; i < n; i++) {
+  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
     const base = i * C.STRIDE;
     const contact = ids[i * 3 + 2];
     const count = d[base + C.COUNT];

@@ -1,3 +1,4 @@
+import { IndexBound } from '../core/index-bound';
 import { collideReach } from '../geometry/collide-reach';
 import { collidePacked } from '../geometry/manifold';
 import {
@@ -24,7 +25,11 @@ class Point implements ManifoldPoint {
 
 const manifold: Manifold = { normalX: 0, normalY: 0, pointCount: 0, points: [new Point(), new Point()] };
 
-/** Creates contacts for the new overlapping pairs the broad phase found, in (shapeA, shapeB) order. */
+/**
+ * Creates contacts for the new overlapping pairs the broad phase found, in (shapeA, shapeB) order.
+ * A world holds at most IndexBound.MAX contacts: pairs beyond that are left out, like filtered ones,
+ * until their proxies move again.
+ */
 export function createNewContacts(core: WorldCore): void {
   const pairs = core.newPairs;
   pairs.clear();
@@ -42,6 +47,7 @@ export function createNewContacts(core: WorldCore): void {
     if ((shapes.flags[a] & shapes.flags[b] & ShapeFlag.SENSOR) !== 0) continue;
     if (!shouldShapesCollide(shapes, a, b)) continue;
     if (!core.jointsAllowCollision(bodyA, bodyB)) continue;
+    if (core.contacts.liveCount >= IndexBound.MAX) continue;
     core.createContact(a, b);
   }
 }

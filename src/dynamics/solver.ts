@@ -1,4 +1,5 @@
 import { growF64, growI32 } from '../core/grow';
+import { IndexBound } from '../core/index-bound';
 import {
   CONTACT_DAMPING_RATIO,
   CONTACT_HERTZ,
@@ -183,7 +184,7 @@ export function solve(core: WorldCore, dt: number): void {
     // positions change only in integratePositions: the last substep's relax factorization still holds
     if (i === 0) tree.factor(ctx);
     tree.project(state, treeBias, true);
-    hinges.solve(state, jointSoft, true);
+    hinges.solve(state, jointSoft);
     for (let j = 0; j < iterativeCount; j++) {
       iterative[j].solve(ctx, true);
       // a row weighed with the tree's mass moved only its own two bodies: the tree carries it on
@@ -197,7 +198,7 @@ export function solve(core: WorldCore, dt: number): void {
     // bodies before the next substep projects again (with the same factorization; gravity and damping
     // only add and scale), P (P v + g) = P (v + g), and this projection would change nothing then.
     if (coupled || i === subSteps - 1) tree.project(state, 0, false);
-    hinges.solve(state, jointSoft, false);
+    hinges.relax(state);
     for (let j = 0; j < iterativeCount; j++) {
       iterative[j].solve(ctx, false);
       if (iterative[j].treeAxialMass > 0) tree.project(state, 0, false);
@@ -310,8 +311,8 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
   const colShapeHead = bodies.shapeHead;
   const shapeNext = shapes.next;
   const proxyKey = shapes.proxyKey;
-  for (let i = 0, n = core.awakeCount; i < n; i++) {
-    const b = awake[i];
+  for (let i = 0, n = core.awakeCount & IndexBound.MAX; i < n; i++) {
+    const b = awake[i] & IndexBound.MAX;
     const s = b * S.STRIDE;
     const dqc = state[s + S.DQC];
     const dqs = state[s + S.DQS];

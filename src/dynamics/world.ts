@@ -9,6 +9,7 @@ import {
   FulcrumError,
   fail,
 } from '../core/errors';
+import { IndexBound } from '../core/index-bound';
 import { readSnapshot, writeSnapshot } from '../debug/snapshot';
 import { maxExtentFrom } from '../geometry/extent';
 import { Pack, packGeometry } from '../geometry/packed';
@@ -179,6 +180,7 @@ export class World {
 
   createBody(def: BodyDef = {}): Body {
     this.checkUnlocked();
+    checkRoom('bodies', this.core.bodies.liveCount);
     if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
     checkKnownKeys('def', def, BODY_DEF_KEYS);
     const type = def.type ?? 'static';
@@ -270,6 +272,7 @@ export class World {
   createJoint(def: JointDef): Joint;
   createJoint(def: JointDef): Joint {
     this.checkUnlocked();
+    checkRoom('joints', this.core.joints.length);
     const joint = buildJoint(this, def);
     const core = this.core;
     const a = joint.bodyA.slot;
@@ -349,6 +352,7 @@ export class World {
     }
     const d = resolveShapeDef(def);
     const shapes = core.shapes;
+    checkRoom('shapes', shapes.liveCount);
     const s = shapes.allocate();
     shapes.body[s] = b;
     shapes.geometry[s] = geometry;
@@ -554,4 +558,9 @@ export class World {
     readSnapshot(bytes, world, () => new World());
     return world;
   }
+}
+
+/** Refuses to add one more of `what` to a world that holds IndexBound.MAX of them. */
+function checkRoom(what: string, count: number): void {
+  if (count >= IndexBound.MAX) throw new FulcrumError(`${what}: a world holds at most ${IndexBound.MAX}`);
 }

@@ -118,6 +118,29 @@ describe('bad input', () => {
     rejects(world, () => world.destroyBody({} as never), /body/);
   });
 
+  it('a world holding 2^24 - 1 bodies, shapes or joints refuses one more and stays as it was', () => {
+    // the count is set rather than reached: 16.7 million bodies would not fit this test's time
+    const { world, box, ground } = sampleWorld();
+    const core = world.core;
+    const bodies = core.bodies.liveCount;
+    core.bodies.liveCount = 0xffffff;
+    rejects(world, () => world.createBody({ type: 'dynamic' }), /bodies.*16777215/);
+    core.bodies.liveCount = bodies;
+    const shapes = core.shapes.liveCount;
+    core.shapes.liveCount = 0xffffff;
+    rejects(world, () => box.createShape(Shape.circle(0.1)), /shapes.*16777215/);
+    core.shapes.liveCount = shapes;
+    const joints = core.joints.length;
+    core.joints.length = 0xffffff;
+    rejects(
+      world,
+      () => world.createJoint({ type: 'revolute', bodyA: ground, bodyB: box, anchor: { x: 0, y: 0 } }),
+      /joints.*16777215/,
+    );
+    core.joints.length = joints;
+    expect(world.createBody({ type: 'dynamic' }).type).toBe('dynamic');
+  });
+
   it('handlers and events', () => {
     const { world } = sampleWorld();
     rejects(world, () => world.on('collision' as never, () => {}), /event.*collision/);

@@ -1,4 +1,5 @@
 import { growF64, growI32 } from '../../core/grow';
+import { IndexBound } from '../../core/index-bound';
 import { S } from '../body-store';
 import type { Softness } from '../softness';
 import type { Joint } from './joint';
@@ -19,7 +20,18 @@ export enum H {
   /** accumulated point impulse */
   LX = 10,
   LY = 11,
-  STRIDE = 12,
+  /**
+   * the anchors turned with the bodies' rotation since the step began, and the inverse of the point
+   * rows' effective mass K, symmetric (see HingeBatch.solve)
+   */
+  RAX = 12,
+  RAY = 13,
+  RBX = 14,
+  RBY = 15,
+  M11 = 16,
+  M12 = 17,
+  M22 = 18,
+  STRIDE = 19,
 }
 
 /**
@@ -92,7 +104,28 @@ export class HingeBatch {
         writeStepData(ctx, ids[2 * i], ids[2 * i + 1], this.anchors, 4 * i, d, i * H.STRIDE);
       }
     }
+    this.startAnchors();
     for (const joint of this.otherActive) joint.prepare(ctx);
+  }
+
+  /**
+   * Sets the turned anchors and K's inverse for the first substep: no body has turned yet since the
+   * step began, so the anchors are the step's own.
+   */
+  private startAnchors(): void {
+    const d = this.data;
+    for (let i = 0, n = this.count & IndexBound.MAX; i < n; i++) {
+      const base = i * H.STRIDE;
+      const rAx = d[base + H.RAX0];
+      const rAy = d[base + H.RAY0];
+      const rBx = d[base + H.RBX0];
+      const rBy = d[base + H.RBY0];
+      d[base + H.RAX] = rAx;
+      d[base + H.RAY] = rAy;
+      d[base + H.RBX] = rBx;
+      d[base + H.RBY] = rBy;
+      storeInverseMass(d, base, rAx, rAy, rBx, rBy);
+    }
   }
 
   private classify(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext): void {
@@ -133,22 +166,18 @@ export class HingeBatch {
     const d = this.data;
     const ids = this.ids;
     const v2 = speedLimit * speedLimit;
-    for (let i = 0, n = this.count; i < n; i++) {
+    for (let i = 0, n = this.count & IndexBound.MAX; i < n; i++) {
       const base = i * H.STRIDE;
-      const sa = ids[2 * i] * S.STRIDE;
-      const sb = ids[2 * i + 1] * S.STRIDE;
+      const sa = (ids[2 * i] & IndexBound.MAX) * S.STRIDE;
+      const sb = (ids[2 * i + 1] & IndexBound.MAX) * S.STRIDE;
       const mA = d[base + H.MA];
       const iA = d[base + H.IA];
       const mB = d[base + H.MB];
       const iB = d[base + H.IB];
-      let c = state[sa + S.DQC];
-      let s = state[sa + S.DQS];
-      const rAx = c * d[base + H.RAX0] - s * d[base + H.RAY0];
-      const rAy = s * d[base + H.RAX0] + c * d[base + H.RAY0];
-      c = state[sb + S.DQC];
-      s = state[sb + S.DQS];
-      const rBx = c * d[base + H.RBX0] - s * d[base + H.RBY0];
-      const rBy = s * d[base + H.RBX0] + c * d[base + H.RBY0];
+      const rAx = d[base + H.RAX];
+      const rAy = d[base + H.RAY];
+      const rBx = d[base + H.RBX];
+      const rBy = d[base + H.RBY];
       const px = d[base + H.LX];
       const py = d[base + H.LY];
       const vAx = state[sa + S.VX];
@@ -184,26 +213,75 @@ export class HingeBatch {
     }
   }
 
-  /** One Gauss-Seidel pass over the hinges' point rows, soft with `useBias`, rigid without. */
-  solve(state: Float64Array, soft: Softness, useBias: boolean): void {
+  /**
+   * One soft Gauss-Seidel pass over the hinges' point rows, with the anchors and mass the warm start
+   * found (the bodies have not turned since).
+   */
+  solve(state: Float64Array, soft: Softness): void {
     if (this.count === 0) return; // as in warmStart
     const d = this.data;
     const ids = this.ids;
-    // read in every call, so that both passes give the loads type feedback (a load that only the
-    // bias pass made left the compiled code without it: deoptimised, the function stayed unoptimised)
     const biasRate = soft.biasRate;
-    const softMassScale = soft.massScale;
-    const softImpulseScale = soft.impulseScale;
-    const massScale = useBias ? softMassScale : 1;
-    const impulseScale = useBias ? softImpulseScale : 0;
-    for (let i = 0, n = this.count; i < n; i++) {
+    const massScale = soft.massScale;
+    const impulseScale = soft.impulseScale;
+    for (let i = 0, n = this.count & IndexBound.MAX; i < n; i++) {
       const base = i * H.STRIDE;
-      const sa = ids[2 * i] * S.STRIDE;
-      const sb = ids[2 * i + 1] * S.STRIDE;
+      const sa = (ids[2 * i] & IndexBound.MAX) * S.STRIDE;
+      const sb = (ids[2 * i + 1] & IndexBound.MAX) * S.STRIDE;
+      const rAx = d[base + H.RAX];
+      const rAy = d[base + H.RAY];
+      const rBx = d[base + H.RBX];
+      const rBy = d[base + H.RBY];
+      const vAx = state[sa + S.VX];
+      const vAy = state[sa + S.VY];
+      const wA = state[sa + S.W];
+      const vBx = state[sb + S.VX];
+      const vBy = state[sb + S.VY];
+      const wB = state[sb + S.W];
+      const bx =
+        vBx -
+        wB * rBy -
+        vAx +
+        wA * rAy +
+        biasRate * (state[sb + S.DPX] - state[sa + S.DPX] + d[base + H.DCX] + rBx - rAx);
+      const by =
+        vBy +
+        wB * rBx -
+        vAy -
+        wA * rAx +
+        biasRate * (state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy);
+      const lx = d[base + H.LX];
+      const ly = d[base + H.LY];
+      const px = -massScale * (d[base + H.M11] * bx + d[base + H.M12] * by) - impulseScale * lx;
+      const py = -massScale * (d[base + H.M12] * bx + d[base + H.M22] * by) - impulseScale * ly;
+      d[base + H.LX] = lx + px;
+      d[base + H.LY] = ly + py;
       const mA = d[base + H.MA];
       const iA = d[base + H.IA];
       const mB = d[base + H.MB];
       const iB = d[base + H.IB];
+      state[sa + S.VX] = vAx - mA * px;
+      state[sa + S.VY] = vAy - mA * py;
+      state[sa + S.W] = wA - iA * (rAx * py - rAy * px);
+      state[sb + S.VX] = vBx + mB * px;
+      state[sb + S.VY] = vBy + mB * py;
+      state[sb + S.W] = wB + iB * (rBx * py - rBy * px);
+    }
+  }
+
+  /**
+   * One rigid Gauss-Seidel pass over the hinges' point rows after the bodies moved: turns the anchors
+   * with the bodies and works out K's inverse anew, and keeps both for the next substep's warm start
+   * and soft pass (velocities change until then, positions do not).
+   */
+  relax(state: Float64Array): void {
+    if (this.count === 0) return; // as in warmStart
+    const d = this.data;
+    const ids = this.ids;
+    for (let i = 0, n = this.count & IndexBound.MAX; i < n; i++) {
+      const base = i * H.STRIDE;
+      const sa = (ids[2 * i] & IndexBound.MAX) * S.STRIDE;
+      const sb = (ids[2 * i + 1] & IndexBound.MAX) * S.STRIDE;
       let c = state[sa + S.DQC];
       let s = state[sa + S.DQS];
       const rAx = c * d[base + H.RAX0] - s * d[base + H.RAY0];
@@ -212,42 +290,56 @@ export class HingeBatch {
       s = state[sb + S.DQS];
       const rBx = c * d[base + H.RBX0] - s * d[base + H.RBY0];
       const rBy = s * d[base + H.RBX0] + c * d[base + H.RBY0];
-      let vAx = state[sa + S.VX];
-      let vAy = state[sa + S.VY];
-      let wA = state[sa + S.W];
-      let vBx = state[sb + S.VX];
-      let vBy = state[sb + S.VY];
-      let wB = state[sb + S.W];
-      let bx = vBx - wB * rBy - vAx + wA * rAy;
-      let by = vBy + wB * rBx - vAy - wA * rAx;
-      // the separation only feeds the bias: the relax pass has none, and skips it
-      if (useBias) {
-        bx += biasRate * (state[sb + S.DPX] - state[sa + S.DPX] + d[base + H.DCX] + rBx - rAx);
-        by += biasRate * (state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy);
-      }
-      const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
-      const k12 = -rAy * rAx * iA - rBy * rBx * iB;
-      const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
-      let det = k11 * k22 - k12 * k12;
-      if (det !== 0) det = 1 / det;
-      const lx = d[base + H.LX];
-      const ly = d[base + H.LY];
-      const px = -massScale * (det * (k22 * bx - k12 * by)) - impulseScale * lx;
-      const py = -massScale * (det * (k11 * by - k12 * bx)) - impulseScale * ly;
-      d[base + H.LX] = lx + px;
-      d[base + H.LY] = ly + py;
-      vAx -= mA * px;
-      vAy -= mA * py;
-      wA -= iA * (rAx * py - rAy * px);
-      vBx += mB * px;
-      vBy += mB * py;
-      wB += iB * (rBx * py - rBy * px);
-      state[sa + S.VX] = vAx;
-      state[sa + S.VY] = vAy;
-      state[sa + S.W] = wA;
-      state[sb + S.VX] = vBx;
-      state[sb + S.VY] = vBy;
-      state[sb + S.W] = wB;
+      d[base + H.RAX] = rAx;
+      d[base + H.RAY] = rAy;
+      d[base + H.RBX] = rBx;
+      d[base + H.RBY] = rBy;
+      storeInverseMass(d, base, rAx, rAy, rBx, rBy);
+      const vAx = state[sa + S.VX];
+      const vAy = state[sa + S.VY];
+      const wA = state[sa + S.W];
+      const vBx = state[sb + S.VX];
+      const vBy = state[sb + S.VY];
+      const wB = state[sb + S.W];
+      const bx = vBx - wB * rBy - vAx + wA * rAy;
+      const by = vBy + wB * rBx - vAy - wA * rAx;
+      const px = -(d[base + H.M11] * bx + d[base + H.M12] * by);
+      const py = -(d[base + H.M12] * bx + d[base + H.M22] * by);
+      d[base + H.LX] += px;
+      d[base + H.LY] += py;
+      const mA = d[base + H.MA];
+      const iA = d[base + H.IA];
+      const mB = d[base + H.MB];
+      const iB = d[base + H.IB];
+      state[sa + S.VX] = vAx - mA * px;
+      state[sa + S.VY] = vAy - mA * py;
+      state[sa + S.W] = wA - iA * (rAx * py - rAy * px);
+      state[sb + S.VX] = vBx + mB * px;
+      state[sb + S.VY] = vBy + mB * py;
+      state[sb + S.W] = wB + iB * (rBx * py - rBy * px);
     }
   }
+}
+
+/** Writes the inverse of the hinge's point-row effective mass K at the turned anchors to `d` at `base`. */
+function storeInverseMass(
+  d: Float64Array,
+  base: number,
+  rAx: number,
+  rAy: number,
+  rBx: number,
+  rBy: number,
+): void {
+  const mA = d[base + H.MA];
+  const iA = d[base + H.IA];
+  const mB = d[base + H.MB];
+  const iB = d[base + H.IB];
+  const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+  const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+  const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+  let det = k11 * k22 - k12 * k12;
+  if (det !== 0) det = 1 / det;
+  d[base + H.M11] = det * k22;
+  d[base + H.M12] = -det * k12;
+  d[base + H.M22] = det * k11;
 }
