@@ -12,6 +12,7 @@ export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel'
 /** prepareBase's body data and anchors, in the hinge batch's layout, and its local anchors */
 const baseScratch = new Float64Array(H.STRIDE);
 const anchorScratch = new Float64Array(4);
+const idScratch = new Int32Array(2);
 
 /**
  * Base of every joint: two bodies, an anchor on each (in the body's frame, relative to its origin),
@@ -124,7 +125,7 @@ export abstract class Joint {
   /** @internal Reads body data and anchors for this step. */
   prepareBase(ctx: JointContext): void {
     const d = baseScratch;
-    this.writeBase(ctx, d, 0, anchorScratch, 0);
+    this.writeBase(ctx, d, idScratch, anchorScratch, 0);
     this.mA = d[H.MA];
     this.iA = d[H.IA];
     this.mB = d[H.MB];
@@ -142,26 +143,29 @@ export abstract class Joint {
   }
 
   /**
-   * Sets the bodies' slots and the step's 1/h, and writes the step's body data and anchors in the
-   * hinge batch's layout (H.MA .. H.DCY) to `d` at `base`; the local anchors go to `anchors` at `k`.
+   * Sets the bodies' slots and the step's 1/h, and writes the step's body data and anchors as the
+   * hinge batch's record `i`: the slots to `ids`, the local anchors to `anchors`, the step data
+   * (H.MA .. H.M22) to `d`.
    */
   private writeBase(
     ctx: JointContext,
     d: Float64Array,
-    base: number,
+    ids: Int32Array,
     anchors: Float64Array,
-    k: number,
+    i: number,
   ): void {
     const a = this.bodyA.slot;
     const b = this.bodyB.slot;
     this.a = a;
     this.b = b;
     this.invH = ctx.invH;
-    anchors[k] = this.localAnchorAx;
-    anchors[k + 1] = this.localAnchorAy;
-    anchors[k + 2] = this.localAnchorBx;
-    anchors[k + 3] = this.localAnchorBy;
-    writeStepData(ctx, a, b, anchors, k, d, base);
+    ids[2 * i] = a;
+    ids[2 * i + 1] = b;
+    anchors[4 * i] = this.localAnchorAx;
+    anchors[4 * i + 1] = this.localAnchorAy;
+    anchors[4 * i + 2] = this.localAnchorBx;
+    anchors[4 * i + 3] = this.localAnchorBy;
+    writeStepData(ctx, ids, anchors, d, i, i + 1);
   }
 
   /** Rotates the anchors by the bodies' rotation so far in the step and measures their separation. */
@@ -315,18 +319,8 @@ export abstract class Joint {
    * @internal Prepares the step of a plain hinge (instead of prepare) and writes its solver data to
    * the hinge batch (see HingeBatch).
    */
-  packHinge(
-    ctx: JointContext,
-    data: Float64Array,
-    base: number,
-    ids: Int32Array,
-    k: number,
-    anchors: Float64Array,
-    anchorBase: number,
-  ): void {
-    this.writeBase(ctx, data, base, anchors, anchorBase);
-    ids[k] = this.a;
-    ids[k + 1] = this.b;
+  packHinge(ctx: JointContext, data: Float64Array, ids: Int32Array, anchors: Float64Array, i: number): void {
+    this.writeBase(ctx, data, ids, anchors, i);
   }
 
   /** @internal Takes back the point impulse the hinge batch accumulated (and the step's 1/h). */

@@ -175,13 +175,12 @@ export class RevoluteJoint extends Joint {
   override packHinge(
     ctx: JointContext,
     data: Float64Array,
-    base: number,
     ids: Int32Array,
-    k: number,
     anchors: Float64Array,
-    anchorBase: number,
+    i: number,
   ): void {
-    super.packHinge(ctx, data, base, ids, k, anchors, anchorBase);
+    super.packHinge(ctx, data, ids, anchors, i);
+    const base = i * H.STRIDE;
     // as prepare does for disabled rows
     this.springImpulse = 0;
     this.motorImpulse = 0;
