@@ -207,6 +207,70 @@ describe('joint structures', () => {
     expect(world.awakeBodyCount).toBe(0);
   });
 
+  it('a free 5 x 5 hinge grid spun at 4 rad/s turns as one rigid body: joints together, spin and momentum kept', () => {
+    // 40 hinges close 16 loops, too many for the tree: the Gauss-Seidel hinge batch solves them, with
+    // anchors that turn 1/60 rad a substep (a stale anchor would be ~8 mm off at the grid's corners)
+    const world = new World({ gravity: { x: 0, y: 0 }, enableSleep: false });
+    const n = 5;
+    const omega = 4;
+    const bodies: Body[][] = [];
+    const joints: Joint[] = [];
+    for (let i = 0; i < n; i++) {
+      bodies.push([]);
+      for (let j = 0; j < n; j++) {
+        // rigid rotation about the centre (2, -2): v = omega x r
+        const x = j;
+        const y = -i;
+        const b = world.createBody({
+          type: 'dynamic',
+          position: { x, y },
+          angularVelocity: omega,
+          linearVelocity: { x: -omega * (y + 2), y: omega * (x - 2) },
+        });
+        b.createShape(Shape.circle(0.4), { density: 1, filter: { groupIndex: -1 } });
+        bodies[i].push(b);
+        if (i > 0) {
+          const a = bodies[i - 1][j];
+          joints.push(world.createJoint({ type: 'revolute', bodyA: a, bodyB: b, anchor: { x, y: y + 0.5 } }));
+        }
+        if (j > 0) {
+          const a = bodies[i][j - 1];
+          joints.push(world.createJoint({ type: 'revolute', bodyA: a, bodyB: b, anchor: { x: x - 0.5, y } }));
+        }
+      }
+    }
+    const all = bodies.flat();
+    const momentum = () => {
+      let px = 0;
+      let py = 0;
+      let l = 0;
+      for (const b of all) {
+        const v = b.linearVelocity;
+        const c = b.worldCenter;
+        px += b.mass * v.x;
+        py += b.mass * v.y;
+        l += b.inertia * b.angularVelocity + b.mass * ((c.x - 2) * v.y - (c.y + 2) * v.x);
+      }
+      return { px, py, l };
+    };
+    const before = momentum();
+    let worst = 0;
+    for (let s = 0; s < 120; s++) {
+      world.step(DT);
+      worst = Math.max(worst, maxSeparation(joints));
+    }
+    const after = momentum();
+    // the joints' impulses are equal and opposite: linear momentum stays zero to rounding
+    expect(Math.hypot(after.px, after.py)).toBeLessThan(1e-9);
+    // angular momentum and spin are kept up to the soft joints' give: the spinning grid stretches a
+    // little (more inertia, a little less spin) and the pairs act at anchors apart by the position
+    // error. Measured: 1.2 mm at most, momentum -0.2 %, spins 3.976-4.004 rad/s; anchors left as they
+    // were at the step's start gave 31 mm and -9 %.
+    expect(worst).toBeLessThan(0.002);
+    expect(Math.abs(after.l - before.l) / before.l).toBeLessThan(0.005);
+    for (const b of all) expect(Math.abs(b.angularVelocity - omega)).toBeLessThan(0.01 * omega);
+  });
+
   it('a revolute motor reaches its speed and never exceeds its torque limit', () => {
     const world = new World({ gravity: { x: 0, y: 0 } });
     const ground = world.createBody();
