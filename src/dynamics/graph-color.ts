@@ -15,6 +15,8 @@ const OVERFLOW = COLORS;
  * colour), then crept 2 mm for seconds. A fixed random order still creeps 1.1-1.3 mm; an order new
  * every step lets the favours cancel: 0.3 mm. The shuffle is integer arithmetic seeded by the
  * colouring's own step count, so it is deterministic and a restored snapshot continues it.
+ *
+ * The hinge batch orders its hinges with a colouring of its own, unshuffled (HingeBatch.orderByColor).
  */
 export class GraphColoring {
   private bodyColors = new Uint32Array(0);
@@ -55,14 +57,15 @@ export class GraphColoring {
   }
 
   /**
-   * Colours the contacts in a shuffled order and sorts them by colour, in the order they were added
-   * within a colour (no two of a colour share a body that contacts move, so that order changes
-   * nothing but the memory access pattern; the overflow's contacts, which may share bodies, keep that
-   * order too). Returns how many there are.
+   * Colours the contacts in a shuffled order (in the order they were added, when `shuffled` is false)
+   * and sorts them by colour, in the order they were added within a colour (no two of a colour share
+   * a body that contacts move, so that order changes nothing but the memory access pattern; the
+   * overflow's contacts, which may share bodies, keep that order too). Returns how many there are.
    */
-  finish(): number {
+  finish(shuffled = true): number {
     const count = this.count;
-    this.shuffle(count);
+    if (shuffled) this.shuffle(count);
+    else for (let i = 0; i < count; i++) this.shuffled[i] = i;
     this.assign(count);
     const starts = this.starts;
     let start = 0;

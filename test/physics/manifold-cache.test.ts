@@ -8,19 +8,11 @@ import {
   setSeparatingAxisHint,
 } from '../../src/geometry/manifold-polygon';
 import { Pack } from '../../src/geometry/packed';
-import type { Manifold } from '../../src/geometry/types';
+import { makeManifold } from '../../src/geometry/types';
 import { Shape, World } from '../../src/index';
 import { groundWorld, pyramid } from '../helpers/world';
 
-const fresh: Manifold = {
-  normalX: 0,
-  normalY: 0,
-  pointCount: 0,
-  points: [
-    { x: 0, y: 0, separation: 0, id: 0 },
-    { x: 0, y: 0, separation: 0, id: 0 },
-  ],
-};
+const fresh = makeManifold();
 
 interface Deviation {
   /** contacts whose manifold the narrow phase kept, and all touching ones */
