@@ -68,6 +68,14 @@ export class BroadPhase {
     return this.trees[0].proxyCount + this.trees[1].proxyCount + this.trees[2].proxyCount;
   }
 
+  /** Whether the trees whose bit (1 << type) is in typeMask hold no proxy. */
+  isEmpty(typeMask: number): boolean {
+    for (let type = 0; type < 3; type++) {
+      if ((typeMask & (1 << type)) !== 0 && this.trees[type].proxyCount > 0) return false;
+    }
+    return true;
+  }
+
   /** Number of entries in the move buffer (including ones destroyed since). */
   get moveCount(): number {
     return this.moveBuffer.length;

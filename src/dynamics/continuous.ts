@@ -97,6 +97,8 @@ export function solveBullets(core: WorldCore): void {
 
 /** Sweeps body `b` from the start pose at `at` in `starts` (see sweepStart) against the trees of `treeMask`. */
 function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: number, treeMask: number): void {
+  // nothing to hit (a world without ground): no sweep and no box to work out
+  if (core.broadPhase.isEmpty(treeMask)) return;
   const bodies = core.bodies;
   const shapes = core.shapes;
   const sweep = input.sweepB;

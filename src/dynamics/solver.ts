@@ -105,6 +105,7 @@ function prepareJoints(core: WorldCore, h: number): void {
     core.jointEpoch,
   );
   core.hingeBatch.prepare(active, core.jointTree.iterative, ctx, rebuilt);
+  core.jointTree.prepare(ctx);
 }
 
 /** Adds the touching solid contacts that have an awake body to the colouring (see listAwakeBodies). */
@@ -207,6 +208,7 @@ export function solve(core: WorldCore, dt: number): void {
     if (coupled) tree.project(state, 0, false);
   }
   hinges.store(ctx);
+  tree.store(ctx);
   applyRestitution(cc, state, settings.restitutionThreshold);
   const contacts = core.contacts;
   storeImpulses(

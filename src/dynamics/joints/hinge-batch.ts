@@ -39,7 +39,8 @@ export enum H {
  * Writes the step data of hinge records `from` to `to` - 1 (H.MA .. H.DCY, and H.RAX .. H.M22 for
  * the first substep) to `d`: the bodies' inverse masses, the anchors relative to the centres of
  * mass, world-oriented, and the centres' offset. The bodies' slots are read from `ids` (2 a record),
- * the local anchors (on A, then on B) from `anchors` (4 a record).
+ * the local anchors (on A, then on B) from `anchors` (4 a record). Records are `stride` doubles apart
+ * (HingePaths' records begin with these fields).
  */
 export function writeStepData(
   ctx: JointContext,
@@ -48,6 +49,7 @@ export function writeStepData(
   d: Float64Array,
   from: number,
   to: number,
+  stride: number = H.STRIDE,
 ): void {
   const invMass = ctx.invMass;
   const invInertia = ctx.invInertia;
@@ -60,7 +62,7 @@ export function writeStepData(
   for (let i = from & IndexBound.MAX, n = to & IndexBound.MAX; i < n; i++) {
     const a = ids[2 * i] & IndexBound.MAX;
     const b = ids[2 * i + 1] & IndexBound.MAX;
-    const base = i * H.STRIDE;
+    const base = i * stride;
     const k = 4 * i;
     const mA = invMass[a];
     const iA = invInertia[a];
@@ -140,7 +142,7 @@ export class HingeBatch {
     this.otherActive.length = 0;
     for (const joint of active) {
       if (joint.isPlainHinge()) this.joints.push(joint);
-      else this.otherActive.push(joint);
+      else if (!joint.onPath) this.otherActive.push(joint);
     }
     for (const joint of iterative) if (!joint.isPlainHinge()) this.otherIterative.push(joint);
     this.orderByColor(ctx);

@@ -1,5 +1,6 @@
 import { growF64, growI32, growU8 } from '../../core/grow';
 import { BodyKind, S } from '../body-store';
+import { HingePaths } from './hinge-paths';
 import type { Joint } from './joint';
 import type { JointContext } from './joint-context';
 
@@ -24,6 +25,9 @@ import type { JointContext } from './joint-context';
  *
  * Joints that would close a loop, a second grounded joint on one body, and joints on bodies with
  * fixed rotation stay with the iterative solver. The choice is greedy in creation order.
+ *
+ * Trees that are paths of free hinges (chains, ropes) are handed to HingePaths, which solves the same
+ * rows in joint space with less arithmetic.
  */
 
 /**
@@ -59,9 +63,11 @@ enum NodeKind {
 }
 
 export class JointTree {
-  /** the joints solved here this step, in creation order */
+  /** the joints solved here this step by the body-and-joint tree, in creation order */
   readonly joints: Joint[] = [];
   jointCount = 0;
+  /** the tree joints of clusters that are paths of free hinges, solved along their paths */
+  readonly paths = new HingePaths();
   /** the active joints with rows for the iterative solver (not in the tree, or with axial rows) */
   readonly iterative: Joint[] = [];
   /** per tree joint: its bodies' slots */
@@ -145,6 +151,15 @@ export class JointTree {
   private adjNext = new Int32Array(64);
   private adjTo = new Int32Array(64);
   private visited = new Uint8Array(32);
+  /** per body slot: at a cluster's root, whether its tree is a path of free hinges */
+  private pathOk = new Uint8Array(64);
+  /** per body slot: the tree joints at it (indices into `joints`), -1 for none; set by splitPaths */
+  private hingeAt0 = new Int32Array(64);
+  private hingeAt1 = new Int32Array(64);
+  /** per body slot: 1 for a dynamic body of a path (valid until the next build) */
+  private pathBody = new Uint8Array(64);
+  /** per tree joint: whether splitPaths placed it on a path */
+  private placed = new Uint8Array(16);
 
   /**
    * Chooses the tree joints among `active` and orders the nodes. Joints chosen get `inTree = true`,
@@ -171,10 +186,18 @@ export class JointTree {
       this.clusterGrounded = growU8(this.clusterGrounded, kind.length);
       this.counted = growU8(this.counted, kind.length);
       this.bodyNode = growI32(this.bodyNode, kind.length, -1);
+      this.pathOk = growU8(this.pathOk, kind.length);
+      this.hingeAt0 = growI32(this.hingeAt0, kind.length);
+      this.hingeAt1 = growI32(this.hingeAt1, kind.length);
+      this.pathBody = growU8(this.pathBody, kind.length);
     }
     // the last build's bodies leave the tree
     for (let n = 0; n < this.nodeCount; n++)
       if (this.nodeKind[n] === NodeKind.BODY) this.bodyNode[this.nodeBody[n]] = -1;
+    for (const joint of this.paths.joints) {
+      this.pathBody[joint.bodyA.slot] = 0;
+      this.pathBody[joint.bodyB.slot] = 0;
+    }
     this.nodeCount = 0;
     this.joints.length = 0;
     this.closures.length = 0;
@@ -195,6 +218,7 @@ export class JointTree {
     for (let j = 0; j < active.length; j++) {
       const joint = active[j];
       joint.inTree = false;
+      joint.onPath = false;
       joint.closure = false;
       joint.treeAxialMass = 0;
       const a = joint.bodyA.slot;
@@ -230,6 +254,7 @@ export class JointTree {
       this.joints.push(joint);
       if (joint.hasAxialRow() && this.axials.length < MAX_AXIALS) this.axials.push(joint);
     }
+    this.splitPaths(kind);
     this.jointCount = this.joints.length;
     this.iterative.length = 0;
     for (let j = 0; j < active.length; j++) {
@@ -251,6 +276,74 @@ export class JointTree {
       this.closureNodeB[c] = this.bodyNode[this.closures[c].bodyB.slot];
     }
     return true;
+  }
+
+  /**
+   * Moves the tree joints of every cluster whose tree is a path of free hinges (each body on at most
+   * two, no closure) from `joints` to `paths`, path by path from an end: its grounded hinge, or a body
+   * on one hinge, whichever comes first in creation order.
+   */
+  private splitPaths(kind: Uint8Array): void {
+    const joints = this.joints;
+    const count = joints.length;
+    const pathOk = this.pathOk;
+    const at0 = this.hingeAt0;
+    const at1 = this.hingeAt1;
+    this.paths.clear();
+    for (let t = 0; t < count; t++) {
+      const joint = joints[t];
+      const a = joint.bodyA.slot;
+      const b = joint.bodyB.slot;
+      const r = this.findCluster(kind[a] === BodyKind.DYNAMIC ? a : b);
+      if (!joint.isFreeHinge()) pathOk[r] = 0;
+      for (let side = 0; side < 2; side++) {
+        const x = side === 0 ? a : b;
+        if (kind[x] !== BodyKind.DYNAMIC) continue;
+        if (at0[x] === -1) at0[x] = t;
+        else if (at1[x] === -1) at1[x] = t;
+        else pathOk[r] = 0;
+      }
+    }
+    for (const joint of this.closures) {
+      const a = joint.bodyA.slot;
+      const b = joint.bodyB.slot;
+      pathOk[this.findCluster(kind[a] === BodyKind.DYNAMIC ? a : b)] = 0;
+    }
+    if (this.placed.length < count) this.placed = new Uint8Array(Math.max(2 * this.placed.length, count));
+    const placed = this.placed;
+    placed.fill(0, 0, count);
+    for (let t = 0; t < count; t++) {
+      const joint = joints[t];
+      const a = joint.bodyA.slot;
+      const b = joint.bodyB.slot;
+      if (placed[t] !== 0 || pathOk[this.findCluster(kind[a] === BodyKind.DYNAMIC ? a : b)] === 0) continue;
+      // an end of its path: the body before it is the ground or on no other hinge
+      let before: number;
+      if (kind[a] !== BodyKind.DYNAMIC || at1[a] === -1) before = a;
+      else if (kind[b] !== BodyKind.DYNAMIC || at1[b] === -1) before = b;
+      else continue;
+      if (kind[before] === BodyKind.DYNAMIC) this.pathBody[before] = 1;
+      let k = t;
+      let start = true;
+      for (;;) {
+        const hinge = joints[k];
+        placed[k] = 1;
+        const forward = hinge.bodyA.slot === before;
+        this.paths.add(hinge, start, forward);
+        start = false;
+        const after = forward ? hinge.bodyB.slot : hinge.bodyA.slot;
+        if (kind[after] !== BodyKind.DYNAMIC) break;
+        this.pathBody[after] = 1;
+        const next = at0[after] === k ? at1[after] : at0[after];
+        if (next === -1 || placed[next] !== 0) break;
+        before = after;
+        k = next;
+      }
+    }
+    // the rest stay with the body-and-joint tree, in creation order
+    let kept = 0;
+    for (let t = 0; t < count; t++) if (placed[t] === 0) joints[kept++] = joints[t];
+    joints.length = kept;
   }
 
   /** the joint epoch, body capacity and active joints of the last build */
@@ -325,6 +418,9 @@ export class JointTree {
   }
 
   private touch(b: number): void {
+    this.pathOk[b] = 1;
+    this.hingeAt0[b] = -1;
+    this.hingeAt1[b] = -1;
     this.cluster[b] = b;
     this.loops[b] = 0;
     this.clusterGrounded[b] = 0;
@@ -506,16 +602,30 @@ export class JointTree {
    * does, one projection per pass leaves the tree rows exact and a second one would change nothing.
    */
   isCoupled(ids: Int32Array, count: number): boolean {
-    if (this.jointCount === 0) return false;
-    const bodyNode = this.bodyNode;
+    if (this.jointCount === 0 && this.paths.count === 0) return false;
     for (let i = 0; i < count; i++) {
-      if (bodyNode[ids[3 * i]] !== -1 || bodyNode[ids[3 * i + 1]] !== -1) return true;
+      if (this.solvesBody(ids[3 * i]) || this.solvesBody(ids[3 * i + 1])) return true;
     }
     for (let j = 0; j < this.iterative.length; j++) {
       const joint = this.iterative[j];
-      if (bodyNode[joint.bodyA.slot] !== -1 || bodyNode[joint.bodyB.slot] !== -1) return true;
+      if (this.solvesBody(joint.bodyA.slot) || this.solvesBody(joint.bodyB.slot)) return true;
     }
     return false;
+  }
+
+  /** Whether dynamic body `b` is on a tree joint (valid until the next build). */
+  private solvesBody(b: number): boolean {
+    return this.bodyNode[b] !== -1 || this.pathBody[b] !== 0;
+  }
+
+  /** Reads the step's data of the path hinges (once a step, before the first factorization). */
+  prepare(ctx: JointContext): void {
+    this.paths.prepare(ctx);
+  }
+
+  /** Hands the path hinges their impulses of the step. */
+  store(ctx: JointContext): void {
+    this.paths.store(ctx);
   }
 
   /**
@@ -523,6 +633,7 @@ export class JointTree {
    * updates the closures' effective masses.
    */
   factor(ctx: JointContext): void {
+    if (this.paths.count > 0) this.paths.factor(ctx.state);
     this.factorTree(ctx);
     if (this.closures.length > 0) this.closureMasses(ctx);
     if (this.axials.length > 0) this.axialMasses(ctx.state);
@@ -761,6 +872,7 @@ export class JointTree {
    * projection then finds its whole impulse, which replaces the one it held; later ones add to it.
    */
   project(state: Float64Array, biasRate: number, first: boolean): void {
+    if (this.paths.count > 0) this.paths.project(state, biasRate, first);
     const count = this.jointCount;
     if (count === 0) return;
     const x = this.x;

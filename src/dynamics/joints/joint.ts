@@ -60,6 +60,8 @@ export abstract class Joint {
   protected invH = 0;
   /** @internal set each step: the rigid rows of this joint are solved by the JointTree */
   inTree = false;
+  /** @internal set each step: a tree joint that HingePaths solves (it needs no prepare then) */
+  onPath = false;
   /** @internal set each step: this hinge closes a loop of the tree; its point rows use closureMass */
   closure = false;
   /** @internal this joint's index among the tree's closures, when `closure` */
@@ -312,6 +314,11 @@ export abstract class Joint {
    * solved by Gauss-Seidel (not in the tree, no closure, no limit, motor or spring).
    */
   isPlainHinge(): boolean {
+    return false;
+  }
+
+  /** @internal Whether the joint is a hinge with its point rows alone (no limit, motor or spring). */
+  isFreeHinge(): boolean {
     return false;
   }
 

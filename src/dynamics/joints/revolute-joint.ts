@@ -167,8 +167,13 @@ export class RevoluteJoint extends Joint {
 
   /** @internal */
   override isPlainHinge(): boolean {
+    return !this.inTree && !this.closure && this.isFreeHinge();
+  }
+
+  /** @internal */
+  override isFreeHinge(): boolean {
     const o = this.o;
-    return !this.inTree && !this.closure && !o.enableLimit && !o.enableMotor && !o.enableSpring;
+    return !o.enableLimit && !o.enableMotor && !o.enableSpring;
   }
 
   /** @internal */
