@@ -33,12 +33,14 @@ export interface RunResult {
   freeFall?: number;
   bodies?: number;
   joints?: number;
+  /** steps of the throwaway copy of the scene run first, while the engine's JIT compiles it */
+  jitWarmupSteps?: number;
   warmupSteps?: number;
   stepsPerWindow?: number;
   windows?: number;
   msPerStep?: Timing;
-  /** wall time of loading the engine, the free-fall check and building the scene, ms */
-  setupMs?: { load: number; freeFall: number; build: number };
+  /** wall time of loading the engine, the free-fall check, the JIT warm-up and building the scene, ms */
+  setupMs?: { load: number; freeFall: number; jitWarmup: number; build: number };
   quality?: Quality;
 }
 
