@@ -148,6 +148,55 @@ describe('DynamicTree', () => {
     }
   });
 
+  it('a swinging chain is refitted, not rebuilt: queries exact, boxes tight, as good as a rebuild', () => {
+    // 100 links in a row that bend into an arc and back, all moving every step: the tree keeps its
+    // shape (neighbours stay neighbours) and only its boxes are refitted (see settleMoves)
+    const tree = new DynamicTree();
+    const boxes = new Map<number, Box>();
+    const linkBox = (i: number, bend: number): Box => {
+      const a = (bend * i) / 100;
+      const x = 10 * Math.sin(a) * (i / 10);
+      const y = -10 * (1 - Math.cos(a)) * (i / 10) - i * 0.3;
+      return [x - 0.35, y - 0.15, x + 0.35, y + 0.15];
+    };
+    for (let i = 0; i < 100; i++) {
+      const b = linkBox(i, 0);
+      boxes.set(tree.createProxy(b[0], b[1], b[2], b[3], i), b);
+    }
+    tree.rebuild();
+    const random = rng(5);
+    let rebuilds = 0;
+    const rebuild = tree.rebuild.bind(tree);
+    tree.rebuild = () => {
+      rebuilds++;
+      rebuild();
+    };
+    for (let step = 1; step <= 60; step++) {
+      for (const [id] of boxes) {
+        const b = linkBox(id, 1.5 * Math.sin(step / 10));
+        tree.enlargeProxy(id, Float64Array.from(b), 0);
+        boxes.set(id, b);
+      }
+      tree.settleMoves();
+      tree.validate();
+      for (const [id, b] of boxes) {
+        expect([tree.getMinX(id), tree.getMinY(id), tree.getMaxX(id), tree.getMaxY(id)]).toEqual(b);
+      }
+      for (let q = 0; q < 10; q++) {
+        const x = (random() - 0.5) * 30;
+        const y = -random() * 40;
+        const box: Box = [x, y, x + random() * 5, y + random() * 5];
+        expect(treeQuery(tree, box)).toEqual(bruteQuery(boxes, box));
+      }
+    }
+    expect(rebuilds).toBe(0);
+    // the refitted tree is as good as a fresh build of the final boxes (sum of node perimeters)
+    const fresh = new DynamicTree();
+    for (const b of boxes.values()) fresh.createProxy(b[0], b[1], b[2], b[3], 0);
+    fresh.rebuild();
+    expect(tree.getAreaRatio()).toBeLessThan(1.1 * fresh.getAreaRatio());
+  });
+
   it('answers queries exactly like brute force through inserts, moves, removals and rebuilds', () => {
     const random = rng(7);
     const tree = new DynamicTree();
