@@ -286,8 +286,9 @@ export class HingeBatch {
         biasRate * (state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy);
       const lx = d[base + H.LX];
       const ly = d[base + H.LY];
-      const px = -massScale * (d[base + H.M11] * bx + d[base + H.M12] * by) - impulseScale * lx;
-      const py = -massScale * (d[base + H.M12] * bx + d[base + H.M22] * by) - impulseScale * ly;
+      const m12 = d[base + H.M12];
+      const px = -massScale * (d[base + H.M11] * bx + m12 * by) - impulseScale * lx;
+      const py = -massScale * (m12 * bx + d[base + H.M22] * by) - impulseScale * ly;
       d[base + H.LX] = lx + px;
       d[base + H.LY] = ly + py;
       const mA = d[base + H.MA];
@@ -317,19 +318,41 @@ export class HingeBatch {
       const base = i * H.STRIDE;
       const sa = (ids[2 * i] & IndexBound.MAX) * S.STRIDE;
       const sb = (ids[2 * i + 1] & IndexBound.MAX) * S.STRIDE;
+      // each field read once into a local: TurboFan loads (and bounds-checks) a typed-array element
+      // again at every read after a store to the same array
+      const mA = d[base + H.MA];
+      const iA = d[base + H.IA];
+      const mB = d[base + H.MB];
+      const iB = d[base + H.IB];
+      const rAx0 = d[base + H.RAX0];
+      const rAy0 = d[base + H.RAY0];
+      const rBx0 = d[base + H.RBX0];
+      const rBy0 = d[base + H.RBY0];
       let c = state[sa + S.DQC];
       let s = state[sa + S.DQS];
-      const rAx = c * d[base + H.RAX0] - s * d[base + H.RAY0];
-      const rAy = s * d[base + H.RAX0] + c * d[base + H.RAY0];
+      const rAx = c * rAx0 - s * rAy0;
+      const rAy = s * rAx0 + c * rAy0;
       c = state[sb + S.DQC];
       s = state[sb + S.DQS];
-      const rBx = c * d[base + H.RBX0] - s * d[base + H.RBY0];
-      const rBy = s * d[base + H.RBX0] + c * d[base + H.RBY0];
+      const rBx = c * rBx0 - s * rBy0;
+      const rBy = s * rBx0 + c * rBy0;
       d[base + H.RAX] = rAx;
       d[base + H.RAY] = rAy;
       d[base + H.RBX] = rBx;
       d[base + H.RBY] = rBy;
-      storeInverseMass(d, base, rAx, rAy, rBx, rBy);
+      // K's inverse, as storeInverseMass, but kept in locals for the impulse below (reading it back
+      // from the record cost the grid 3 %)
+      const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+      const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+      const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+      let det = k11 * k22 - k12 * k12;
+      if (det !== 0) det = 1 / det;
+      const m11 = det * k22;
+      const m12 = -det * k12;
+      const m22 = det * k11;
+      d[base + H.M11] = m11;
+      d[base + H.M12] = m12;
+      d[base + H.M22] = m22;
       const vAx = state[sa + S.VX];
       const vAy = state[sa + S.VY];
       const wA = state[sa + S.W];
@@ -338,14 +361,10 @@ export class HingeBatch {
       const wB = state[sb + S.W];
       const bx = vBx - wB * rBy - vAx + wA * rAy;
       const by = vBy + wB * rBx - vAy - wA * rAx;
-      const px = -(d[base + H.M11] * bx + d[base + H.M12] * by);
-      const py = -(d[base + H.M12] * bx + d[base + H.M22] * by);
+      const px = -(m11 * bx + m12 * by);
+      const py = -(m12 * bx + m22 * by);
       d[base + H.LX] += px;
       d[base + H.LY] += py;
-      const mA = d[base + H.MA];
-      const iA = d[base + H.IA];
-      const mB = d[base + H.MB];
-      const iB = d[base + H.IB];
       state[sa + S.VX] = vAx - mA * px;
       state[sa + S.VY] = vAy - mA * py;
       state[sa + S.W] = wA - iA * (rAx * py - rAy * px);

@@ -123,27 +123,34 @@ export class HingePaths {
       const base = k * P.STRIDE;
       const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
       const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
-      let c = state[sa + S.DQC];
-      let s = state[sa + S.DQS];
-      const rAx = c * d[base + H.RAX0] - s * d[base + H.RAY0];
-      const rAy = s * d[base + H.RAX0] + c * d[base + H.RAY0];
-      c = state[sb + S.DQC];
-      s = state[sb + S.DQS];
-      const rBx = c * d[base + H.RBX0] - s * d[base + H.RBY0];
-      const rBy = s * d[base + H.RBX0] + c * d[base + H.RBY0];
-      d[base + H.RAX] = rAx;
-      d[base + H.RAY] = rAy;
-      d[base + H.RBX] = rBx;
-      d[base + H.RBY] = rBy;
-      d[base + P.EX] = state[sb + S.DPX] - state[sa + S.DPX] + d[base + H.DCX] + rBx - rAx;
-      d[base + P.EY] = state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy;
+      // every field read once and before the stores (see HingeBatch.relax)
       const mA = d[base + H.MA];
       const iA = d[base + H.IA];
       const mB = d[base + H.MB];
       const iB = d[base + H.IB];
+      const link = d[base + P.LINK];
+      const dcx = d[base + H.DCX];
+      const dcy = d[base + H.DCY];
+      const rAx0 = d[base + H.RAX0];
+      const rAy0 = d[base + H.RAY0];
+      const rBx0 = d[base + H.RBX0];
+      const rBy0 = d[base + H.RBY0];
+      let c = state[sa + S.DQC];
+      let s = state[sa + S.DQS];
+      const rAx = c * rAx0 - s * rAy0;
+      const rAy = s * rAx0 + c * rAy0;
+      c = state[sb + S.DQC];
+      s = state[sb + S.DQS];
+      const rBx = c * rBx0 - s * rBy0;
+      const rBy = s * rBx0 + c * rBy0;
+      d[base + H.RAX] = rAx;
+      d[base + H.RAY] = rAy;
+      d[base + H.RBX] = rBx;
+      d[base + H.RBY] = rBy;
+      d[base + P.EX] = state[sb + S.DPX] - state[sa + S.DPX] + dcx + rBx - rAx;
+      d[base + P.EY] = state[sb + S.DPY] - state[sa + S.DPY] + dcy + rBy - rAy;
       // the coupling to the previous hinge through body A (B of that one): the velocity of this
       // hinge's rows per unit impulse on the previous one's, -(m 1 + i r⊥ q⊥ᵀ)
-      const link = d[base + P.LINK];
       const b11 = -link * (mA + iA * rAy * qy);
       const b12 = link * iA * rAy * qx;
       const b21 = link * iA * rAx * qy;
@@ -229,20 +236,24 @@ export class HingePaths {
       l12 = d[base + P.L12];
       l21 = d[base + P.L21];
       l22 = d[base + P.L22];
-      d[base + H.LX] = keep * d[base + H.LX] + px;
-      d[base + H.LY] = keep * d[base + H.LY] + py;
-      const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
-      const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
       const mA = d[base + H.MA];
       const iA = d[base + H.IA];
       const mB = d[base + H.MB];
       const iB = d[base + H.IB];
+      const rAx = d[base + H.RAX];
+      const rAy = d[base + H.RAY];
+      const rBx = d[base + H.RBX];
+      const rBy = d[base + H.RBY];
+      d[base + H.LX] = keep * d[base + H.LX] + px;
+      d[base + H.LY] = keep * d[base + H.LY] + py;
+      const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
+      const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
       state[sa + S.VX] -= mA * px;
       state[sa + S.VY] -= mA * py;
-      state[sa + S.W] -= iA * (d[base + H.RAX] * py - d[base + H.RAY] * px);
+      state[sa + S.W] -= iA * (rAx * py - rAy * px);
       state[sb + S.VX] += mB * px;
       state[sb + S.VY] += mB * py;
-      state[sb + S.W] += iB * (d[base + H.RBX] * py - d[base + H.RBY] * px);
+      state[sb + S.W] += iB * (rBx * py - rBy * px);
     }
   }
 
