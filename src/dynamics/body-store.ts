@@ -43,6 +43,8 @@ export enum S {
 export class BodyStore extends SlotStore {
   kind = new Uint8Array(0);
   flags = new Uint8Array(0);
+  /** counts the changes of any body's AWAKE flag after its creation (sleep, wake, type changes) */
+  awakeEpoch = 0;
   state = new Float64Array(0);
   // origin transform
   px = new Float64Array(0);

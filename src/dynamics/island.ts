@@ -81,6 +81,7 @@ export class Islands {
 
   private sleepBody(bodies: BodyStore, b: number, island: number): void {
     bodies.flags[b] &= ~BodyFlag.AWAKE;
+    bodies.awakeEpoch++;
     bodies.sleepIsland[b] = island;
     bodies.islandNext[b] = this.islandHead[island];
     this.islandHead[island] = b;
@@ -112,6 +113,7 @@ export class Islands {
 
   private wakeBody(bodies: BodyStore, b: number): void {
     bodies.flags[b] |= BodyFlag.AWAKE;
+    bodies.awakeEpoch++;
     bodies.sleepTime[b] = 0;
     bodies.sleepIsland[b] = -1;
     bodies.islandNext[b] = -1;

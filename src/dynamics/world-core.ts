@@ -77,6 +77,14 @@ export class WorldCore {
   readonly bodyJoints: (Joint[] | undefined)[] = [];
   /** joints solved in the current step and what they read */
   readonly activeJoints: Joint[] = [];
+  /** counts joints made and destroyed */
+  jointListEpoch = 0;
+  /**
+   * `jointListEpoch` and the bodies' `awakeEpoch` when `activeJoints` was listed: while neither
+   * changed, the same joints have an awake body
+   */
+  activeListedAt = -1;
+  activeListedAwake = -1;
   /** the exact solver of the active joints that form a forest */
   readonly jointTree = new JointTree();
   /**

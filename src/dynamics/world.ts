@@ -278,6 +278,7 @@ export class World {
     const a = joint.bodyA.slot;
     const b = joint.bodyB.slot;
     core.joints.push(joint);
+    core.jointListEpoch++;
     const listA = core.bodyJoints[a] ?? [];
     core.bodyJoints[a] = listA;
     listA.push(joint);
@@ -304,6 +305,7 @@ export class World {
     const core = this.core;
     joint.destroyed = true;
     core.joints.splice(core.joints.indexOf(joint), 1);
+    core.jointListEpoch++;
     for (const body of [joint.bodyA, joint.bodyB]) {
       const list = core.bodyJoints[body.slot];
       const i = list ? list.indexOf(joint) : -1;
@@ -424,6 +426,7 @@ export class World {
       core.destroyProxy(s);
     }
     bodies.kind[b] = kind;
+    bodies.awakeEpoch++;
     if (kind === BodyKind.STATIC) {
       bodies.flags[b] &= ~BodyFlag.AWAKE;
       const st = b * S.STRIDE;

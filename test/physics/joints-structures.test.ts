@@ -271,6 +271,62 @@ describe('joint structures', () => {
     for (const b of all) expect(Math.abs(b.angularVelocity - omega)).toBeLessThan(0.01 * omega);
   });
 
+  it('a hanging 5 x 5 net of hinges at rest: its three pins carry its weight, by their reaction forces', () => {
+    // 16 loops: the Gauss-Seidel hinge batch solves every hinge, and keeps their impulses
+    const world = new World({ enableSleep: false });
+    const ground = world.createBody();
+    const n = 5;
+    const nodes: Body[][] = [];
+    const pins: Joint[] = [];
+    for (let i = 0; i < n; i++) {
+      nodes.push([]);
+      for (let j = 0; j < n; j++) {
+        const b = world.createBody({
+          type: 'dynamic',
+          position: { x: j, y: -i },
+          linearDamping: 1,
+          angularDamping: 1,
+        });
+        // 1 kg each
+        b.createShape(Shape.circle(0.2), { density: 1 / (Math.PI * 0.04), filter: { groupIndex: -1 } });
+        nodes[i].push(b);
+        if (i > 0)
+          world.createJoint({
+            type: 'revolute',
+            bodyA: nodes[i - 1][j],
+            bodyB: b,
+            anchor: { x: j, y: 0.5 - i },
+          });
+        if (j > 0)
+          world.createJoint({
+            type: 'revolute',
+            bodyA: nodes[i][j - 1],
+            bodyB: b,
+            anchor: { x: j - 0.5, y: -i },
+          });
+        if (i === 0 && j % 2 === 0)
+          pins.push(world.createJoint({ type: 'revolute', bodyA: ground, bodyB: b, anchor: { x: j, y: 0 } }));
+      }
+    }
+    for (let s = 0; s < 600; s++) world.step(DT);
+    // undamped for a last second: damping would also damp gravity's pull within each substep
+    for (const row of nodes)
+      for (const b of row) {
+        b.setLinearDamping(0);
+        b.setAngularDamping(0);
+      }
+    for (let s = 0; s < 60; s++) world.step(DT);
+    // the pins hold the net's 25 kg: 250 N up on the net (B), none sideways in sum
+    let up = 0;
+    let side = 0;
+    for (const pin of pins) {
+      up += pin.getReactionForce().y;
+      side += pin.getReactionForce().x;
+    }
+    expect(up).toBeCloseTo(250, 1);
+    expect(Math.abs(side)).toBeLessThan(0.05);
+  });
+
   it('a revolute motor reaches its speed and never exceeds its torque limit', () => {
     const world = new World({ gravity: { x: 0, y: 0 } });
     const ground = world.createBody();

@@ -104,8 +104,10 @@ export function writeStepData(
  * grids, cloth, loops the tree does not take) packed into flat arrays, like the contacts: a joint
  * object keeps each field in its own heap box and is reached through a virtual call, which made
  * such joints cost more than their arithmetic. The joints pack their step data here
- * (Joint.packHinge, in place of prepare) and get their impulses back after the substeps (Joint.unpackHinge). The
- * arithmetic is the revolute joint's point rows, term for term.
+ * (Joint.packHinge, in place of prepare). Their impulses stay here from step to step (a hinge's
+ * reaction force reads them here) and go back to the joints when the batch is made anew
+ * (Joint.unpackHinge): handing them over every step took a call per hinge (3 % of a hinge grid's
+ * step). The arithmetic is the revolute joint's point rows, term for term.
  */
 export class HingeBatch {
   count = 0;
@@ -119,6 +121,8 @@ export class HingeBatch {
   private readonly coloring = new GraphColoring();
   /** the active joints that are not in the batch, in their order */
   readonly otherActive: Joint[] = [];
+  /** 1/h of the last step the batch solved (the hinges' reaction forces) */
+  invH = 0;
   /** the iterative joints that are not in the batch, in their order */
   readonly otherIterative: Joint[] = [];
 
@@ -137,6 +141,9 @@ export class HingeBatch {
   }
 
   private classify(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext): void {
+    // the last batch's hinges take their impulses back (those that stay bring them in again)
+    for (let i = 0; i < this.count; i++) this.joints[i].unpackHinge(this.data, i * H.STRIDE, this.invH);
+    this.count = 0;
     this.joints.length = 0;
     this.otherIterative.length = 0;
     this.otherActive.length = 0;
@@ -184,9 +191,9 @@ export class HingeBatch {
     for (let i = 0; i < n; i++) joints[i] = ordered[coloring.order[i]];
   }
 
-  /** Returns the accumulated impulses to the joints (warm start of the next step, reaction force). */
+  /** Ends the step: the impulses stay here, and the step's 1/h makes them the reaction forces. */
   store(ctx: JointContext): void {
-    for (let i = 0; i < this.count; i++) this.joints[i].unpackHinge(this.data, i * H.STRIDE, ctx);
+    this.invH = ctx.invH;
   }
 
   /**

@@ -268,7 +268,7 @@ export class HingePaths {
       const sense = this.orientation[k];
       d[base + H.LX] *= sense;
       d[base + H.LY] *= sense;
-      this.joints[k].unpackHinge(d, base, ctx);
+      this.joints[k].unpackHinge(d, base, ctx.invH);
     }
   }
 }

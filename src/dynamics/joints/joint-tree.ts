@@ -167,14 +167,16 @@ export class JointTree {
    */
   build(
     active: readonly Joint[],
+    relisted: boolean,
     kind: Uint8Array,
     invMass: Float64Array,
     invInertia: Float64Array,
     epoch: number,
   ): boolean {
     // the choice reads only the joints' options and the bodies' kinds and masses: while none of
-    // them changed (the world's joint epoch) and the same joints are active, the last build holds
-    if (this.isBuilt(active, kind.length, epoch)) return false;
+    // them changed (the world's joint epoch) and the same joints are active (not `relisted`, or
+    // relisted the same), the last build holds
+    if (this.isBuilt(active, relisted, kind.length, epoch)) return false;
     this.builtEpoch = epoch;
     this.builtBodyCapacity = kind.length;
     this.builtActive.length = 0;
@@ -351,8 +353,9 @@ export class JointTree {
   private builtBodyCapacity = -1;
   private readonly builtActive: Joint[] = [];
 
-  private isBuilt(active: readonly Joint[], bodyCapacity: number, epoch: number): boolean {
+  private isBuilt(active: readonly Joint[], relisted: boolean, bodyCapacity: number, epoch: number): boolean {
     if (epoch !== this.builtEpoch || bodyCapacity !== this.builtBodyCapacity) return false;
+    if (!relisted) return true;
     const built = this.builtActive;
     if (active.length !== built.length) return false;
     for (let j = 0; j < active.length; j++) if (active[j] !== built[j]) return false;

@@ -60,6 +60,8 @@ export abstract class Joint {
   protected invH = 0;
   /** @internal set each step: the rigid rows of this joint are solved by the JointTree */
   inTree = false;
+  /** @internal this hinge's record in the hinge batch while it is there (see HingeBatch), or -1 */
+  batchIndex = -1;
   /** @internal set each step: a tree joint that HingePaths solves (it needs no prepare then) */
   onPath = false;
   /** @internal set each step: this hinge closes a loop of the tree; its point rows use closureMass */
@@ -330,8 +332,11 @@ export abstract class Joint {
     this.writeBase(ctx, data, ids, anchors, i);
   }
 
-  /** @internal Takes back the point impulse the hinge batch accumulated (and the step's 1/h). */
-  unpackHinge(_data: Float64Array, _base: number, _ctx: JointContext): void {}
+  /**
+   * @internal Takes back the point impulse accumulated in `data` at `base` (by the hinge batch or
+   * HingePaths) and the 1/h of its step.
+   */
+  unpackHinge(_data: Float64Array, _base: number, _invH: number): void {}
 
   /** @internal */
   abstract prepare(ctx: JointContext): void;

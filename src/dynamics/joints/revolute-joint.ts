@@ -119,6 +119,12 @@ export class RevoluteJoint extends Joint {
 
   getReactionForce(): Vec2 {
     this.check();
+    if (this.batchIndex >= 0) {
+      // the hinge batch keeps the impulse until the hinge leaves it (see HingeBatch)
+      const batch = this.world.core.hingeBatch;
+      const base = this.batchIndex * H.STRIDE;
+      return { x: batch.data[base + H.LX] * batch.invH, y: batch.data[base + H.LY] * batch.invH };
+    }
     return { x: this.linearX * this.invH, y: this.linearY * this.invH };
   }
 
@@ -193,13 +199,15 @@ export class RevoluteJoint extends Joint {
     this.upperImpulse = 0;
     data[base + H.LX] = this.linearX;
     data[base + H.LY] = this.linearY;
+    this.batchIndex = i;
   }
 
   /** @internal */
-  override unpackHinge(data: Float64Array, base: number, ctx: JointContext): void {
+  override unpackHinge(data: Float64Array, base: number, invH: number): void {
     this.linearX = data[base + H.LX];
     this.linearY = data[base + H.LY];
-    this.invH = ctx.invH;
+    this.invH = invH;
+    this.batchIndex = -1;
   }
 
   /** @internal */
