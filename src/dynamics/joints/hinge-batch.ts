@@ -36,11 +36,28 @@ export enum H {
 }
 
 /**
+ * Layout of a hinge's anchors (doubles): on A and on B in the bodies' frames relative to their
+ * origins, as the joint holds them, then relative to their centres of mass (see writeStepData).
+ */
+export enum Anchor {
+  AX = 0,
+  AY = 1,
+  BX = 2,
+  BY = 3,
+  CAX = 4,
+  CAY = 5,
+  CBX = 6,
+  CBY = 7,
+  STRIDE = 8,
+}
+
+/**
  * Writes the step data of hinge records `from` to `to` - 1 (H.MA .. H.DCY, and H.RAX .. H.M22 for
  * the first substep) to `d`: the bodies' inverse masses, the anchors relative to the centres of
  * mass, world-oriented, and the centres' offset. The bodies' slots are read from `ids` (2 a record),
- * the local anchors (on A, then on B) from `anchors` (4 a record). Records are `stride` doubles apart
- * (HingePaths' records begin with these fields).
+ * the local anchors from `anchors` (Anchor layout), whose anchors relative to the centres it fills
+ * in. Records are `stride` doubles apart (HingePaths' records begin with these fields). Until a
+ * body's mass changes (which makes the joints' step anew), the next steps need only turnStepData.
  */
 export function writeStepData(
   ctx: JointContext,
@@ -53,35 +70,58 @@ export function writeStepData(
 ): void {
   const invMass = ctx.invMass;
   const invInertia = ctx.invInertia;
-  const qc = ctx.qc;
-  const qs = ctx.qs;
   const lcx = ctx.lcx;
   const lcy = ctx.lcy;
+  for (let i = from & IndexBound.MAX, n = to & IndexBound.MAX; i < n; i++) {
+    const a = ids[2 * i] & IndexBound.MAX;
+    const b = ids[2 * i + 1] & IndexBound.MAX;
+    const base = i * stride;
+    const k = i * Anchor.STRIDE;
+    d[base + H.MA] = invMass[a];
+    d[base + H.IA] = invInertia[a];
+    d[base + H.MB] = invMass[b];
+    d[base + H.IB] = invInertia[b];
+    anchors[k + Anchor.CAX] = anchors[k + Anchor.AX] - lcx[a];
+    anchors[k + Anchor.CAY] = anchors[k + Anchor.AY] - lcy[a];
+    anchors[k + Anchor.CBX] = anchors[k + Anchor.BX] - lcx[b];
+    anchors[k + Anchor.CBY] = anchors[k + Anchor.BY] - lcy[b];
+  }
+  turnStepData(ctx, ids, anchors, d, from, to, stride);
+}
+
+/**
+ * The part of writeStepData that changes every step: the anchors turned with the bodies (from
+ * `anchors`' centred ones), the centres' offset, and K's inverse for the first substep. The masses
+ * must be in `d` already.
+ */
+export function turnStepData(
+  ctx: JointContext,
+  ids: Int32Array,
+  anchors: Float64Array,
+  d: Float64Array,
+  from: number,
+  to: number,
+  stride: number = H.STRIDE,
+): void {
+  const qc = ctx.qc;
+  const qs = ctx.qs;
   const cx = ctx.cx;
   const cy = ctx.cy;
   for (let i = from & IndexBound.MAX, n = to & IndexBound.MAX; i < n; i++) {
     const a = ids[2 * i] & IndexBound.MAX;
     const b = ids[2 * i + 1] & IndexBound.MAX;
     const base = i * stride;
-    const k = 4 * i;
-    const mA = invMass[a];
-    const iA = invInertia[a];
-    const mB = invMass[b];
-    const iB = invInertia[b];
-    d[base + H.MA] = mA;
-    d[base + H.IA] = iA;
-    d[base + H.MB] = mB;
-    d[base + H.IB] = iB;
+    const k = i * Anchor.STRIDE;
     let c = qc[a];
     let s = qs[a];
-    let x = anchors[k] - lcx[a];
-    let y = anchors[k + 1] - lcy[a];
+    let x = anchors[k + Anchor.CAX];
+    let y = anchors[k + Anchor.CAY];
     const rAx = c * x - s * y;
     const rAy = s * x + c * y;
     c = qc[b];
     s = qs[b];
-    x = anchors[k + 2] - lcx[b];
-    y = anchors[k + 3] - lcy[b];
+    x = anchors[k + Anchor.CBX];
+    y = anchors[k + Anchor.CBY];
     const rBx = c * x - s * y;
     const rBy = s * x + c * y;
     d[base + H.RAX0] = rAx;
@@ -114,7 +154,7 @@ export class HingeBatch {
   data = new Float64Array(0);
   /** body A and body B of each hinge */
   ids = new Int32Array(0);
-  /** each hinge's local anchors on A and B (x, y, x, y), relative to the bodies' origins */
+  /** each hinge's anchors (Anchor layout) */
   anchors = new Float64Array(0);
   readonly joints: Joint[] = [];
   /** the colouring that orders the hinges (see orderByColor) */
@@ -135,7 +175,7 @@ export class HingeBatch {
   prepare(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext, rebuilt: boolean): void {
     if (rebuilt) this.classify(active, iterative, ctx);
     else {
-      writeStepData(ctx, this.ids, this.anchors, this.data, 0, this.count);
+      turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count);
     }
     for (const joint of this.otherActive) joint.prepare(ctx);
   }
@@ -158,7 +198,7 @@ export class HingeBatch {
       const capacity = Math.max(64, 2 * n);
       this.data = growF64(this.data, capacity * H.STRIDE);
       this.ids = growI32(this.ids, capacity * 2);
-      this.anchors = growF64(this.anchors, capacity * 4);
+      this.anchors = growF64(this.anchors, capacity * Anchor.STRIDE);
     }
     for (let i = 0; i < n; i++) {
       this.joints[i].packHinge(ctx, this.data, this.ids, this.anchors, i);

@@ -1,7 +1,7 @@
 import { growF64, growI32 } from '../../core/grow';
 import { IndexBound } from '../../core/index-bound';
 import { S } from '../body-store';
-import { H, writeStepData } from './hinge-batch';
+import { Anchor, H, turnStepData, writeStepData } from './hinge-batch';
 import type { Joint } from './joint';
 import type { JointContext } from './joint-context';
 
@@ -57,8 +57,10 @@ export class HingePaths {
   private data = new Float64Array(0);
   /** per hinge: the slots of the bodies before and after it on the path */
   private ids = new Int32Array(0);
-  /** per hinge: local anchors on the body before, then on the body after (x, y, x, y) */
+  /** per hinge: its anchors (Anchor layout), with the body before it as A and the one after as B */
   private anchors = new Float64Array(0);
+  /** whether the paths were laid anew since the last prepare (their masses must be read) */
+  private laid = false;
   /** per hinge: 1 when the joint's body A comes before it on its path, -1 when B does */
   private orientation = new Float64Array(0);
 
@@ -78,18 +80,19 @@ export class HingePaths {
       const cap = Math.max(16, 2 * (k + 1));
       this.data = growF64(this.data, cap * P.STRIDE);
       this.ids = growI32(this.ids, 2 * cap);
-      this.anchors = growF64(this.anchors, 4 * cap);
+      this.anchors = growF64(this.anchors, Anchor.STRIDE * cap);
       this.orientation = growF64(this.orientation, cap);
     }
     const a = joint.bodyA.slot;
     const b = joint.bodyB.slot;
     this.ids[2 * k] = forward ? a : b;
     this.ids[2 * k + 1] = forward ? b : a;
-    const o = 4 * k;
-    this.anchors[o] = forward ? joint.localAnchorAx : joint.localAnchorBx;
-    this.anchors[o + 1] = forward ? joint.localAnchorAy : joint.localAnchorBy;
-    this.anchors[o + 2] = forward ? joint.localAnchorBx : joint.localAnchorAx;
-    this.anchors[o + 3] = forward ? joint.localAnchorBy : joint.localAnchorAy;
+    const o = k * Anchor.STRIDE;
+    this.anchors[o + Anchor.AX] = forward ? joint.localAnchorAx : joint.localAnchorBx;
+    this.anchors[o + Anchor.AY] = forward ? joint.localAnchorAy : joint.localAnchorBy;
+    this.anchors[o + Anchor.BX] = forward ? joint.localAnchorBx : joint.localAnchorAx;
+    this.anchors[o + Anchor.BY] = forward ? joint.localAnchorBy : joint.localAnchorAy;
+    this.laid = true;
     this.orientation[k] = forward ? 1 : -1;
     this.data[k * P.STRIDE + P.LINK] = startsPath ? 0 : 1;
     // a hinge here is not prepared (HingePaths reads its step data itself): impulses of rows it had
@@ -103,7 +106,10 @@ export class HingePaths {
   /** Reads the step's masses and anchors (once a step, before the first factorization). */
   prepare(ctx: JointContext): void {
     if (this.count === 0) return;
-    writeStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+    // the masses and centres change only with a body's mass, which lays the paths anew
+    if (this.laid) writeStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+    else turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+    this.laid = false;
   }
 
   /**

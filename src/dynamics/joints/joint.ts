@@ -3,7 +3,7 @@ import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
 import type { World } from '../world';
-import { H, writeStepData } from './hinge-batch';
+import { Anchor, H, writeStepData } from './hinge-batch';
 import type { JointContext } from './joint-context';
 import { relativeAngle } from './joint-math';
 
@@ -11,7 +11,7 @@ export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel'
 
 /** prepareBase's body data and anchors, in the hinge batch's layout, and its local anchors */
 const baseScratch = new Float64Array(H.STRIDE);
-const anchorScratch = new Float64Array(4);
+const anchorScratch = new Float64Array(Anchor.STRIDE);
 const idScratch = new Int32Array(2);
 
 /**
@@ -165,10 +165,11 @@ export abstract class Joint {
     this.invH = ctx.invH;
     ids[2 * i] = a;
     ids[2 * i + 1] = b;
-    anchors[4 * i] = this.localAnchorAx;
-    anchors[4 * i + 1] = this.localAnchorAy;
-    anchors[4 * i + 2] = this.localAnchorBx;
-    anchors[4 * i + 3] = this.localAnchorBy;
+    const k = i * Anchor.STRIDE;
+    anchors[k + Anchor.AX] = this.localAnchorAx;
+    anchors[k + Anchor.AY] = this.localAnchorAy;
+    anchors[k + Anchor.BX] = this.localAnchorBx;
+    anchors[k + Anchor.BY] = this.localAnchorBy;
     writeStepData(ctx, ids, anchors, d, i, i + 1);
   }
 
