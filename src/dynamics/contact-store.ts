@@ -29,6 +29,11 @@ export enum MC {
   Y0 = 7,
   X1 = 8,
   Y1 = 9,
+  /**
+   * for a manifold without points (in X0's place): a lower bound of the shapes' distance when it was
+   * computed, or -1 (see lastSeparatedDistance)
+   */
+  GAP = 6,
   STRIDE = 10,
 }
 

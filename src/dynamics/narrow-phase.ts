@@ -2,6 +2,7 @@ import { IndexBound } from '../core/index-bound';
 import { collideReach } from '../geometry/collide-reach';
 import { collidePacked } from '../geometry/manifold';
 import {
+  lastSeparatedDistance,
   lastSeparatingAxis,
   referenceOwnerOfId,
   setReferenceHint,
@@ -160,6 +161,9 @@ export function updateContacts(core: WorldCore): void {
           Math.abs(tx - cache[o + MC.TX]) +
           Math.abs(ty - cache[o + MC.TY]) +
           (fromA ? extentB : extentA) * (Math.abs(rc - cache[o + MC.RC]) + Math.abs(rs - cache[o + MC.RS]));
+        // shapes found apart stay apart (the manifold empty) while they came closer by less than
+        // their distance then, less the reach (the vertex-pair tolerance as for `gap` above)
+        if (pointCount[c] === 0 && moved < cache[o + MC.GAP] - reach - VERTEX_PAIR_MIN_GAP) continue;
         if (moved < tolerance) {
           // the manifold holds: carried along with body A, separations and impulses kept
           const count = pointCount[c];
@@ -207,6 +211,7 @@ export function updateContacts(core: WorldCore): void {
         cache[o + MC.X0 + 2 * j] = ac * px + as * py;
         cache[o + MC.Y0 + 2 * j] = ac * py - as * px;
       }
+      if (manifold.pointCount === 0) cache[o + MC.GAP] = lastSeparatedDistance();
       flags |= ContactFlag.CACHED;
     }
     contactFlags[c] = flags;

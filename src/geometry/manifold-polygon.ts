@@ -92,6 +92,11 @@ export const VERTEX_PAIR_MIN_GAP = 0.1 * LINEAR_SLOP;
  */
 let axisHint = 0;
 let separatingAxis = 0;
+/**
+ * When the last call found the pair apart along an edge normal: that separation less both radii, a
+ * lower bound of the shapes' distance (the other shape lies beyond the edge's line); else -1.
+ */
+let separatedDistance = -1;
 enum Axis {
   /** added to B's face index in `separatingAxis` */
   B = 8,
@@ -101,6 +106,15 @@ enum Axis {
 export function setSeparatingAxisHint(axis: number): void {
   axisHint = axis;
   separatingAxis = 0;
+  separatedDistance = -1;
+}
+
+/**
+ * A lower bound of the shapes' distance from the last collide call that followed
+ * setSeparatingAxisHint, when it found them apart along an edge normal; -1 otherwise.
+ */
+export function lastSeparatedDistance(): number {
+  return separatedDistance;
 }
 
 /** The axis that separated the pair in the last collide call (0 when none did, or not a polygon pair). */
@@ -257,6 +271,7 @@ function collideLoaded(): number {
       edgeSeparation(p, edge, ofB ? polyA : polyB);
       if (separationOut[0] >= limit) {
         separatingAxis = axisHint;
+        separatedDistance = separationOut[0] - polyA.radius - polyB.radius;
         return 0;
       }
     }
@@ -265,12 +280,14 @@ function collideLoaded(): number {
   const separationA = separationOut[0];
   if (separationA >= limit) {
     separatingAxis = edgeA + 1;
+    separatedDistance = separationA - polyA.radius - polyB.radius;
     return 0;
   }
   const edgeB = maxSeparation(polyB, polyA);
   const separationB = separationOut[0];
   if (separationB >= limit) {
     separatingAxis = Axis.B + edgeB + 1;
+    separatedDistance = separationB - polyA.radius - polyB.radius;
     return 0;
   }
 
@@ -515,6 +532,7 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   const separationA = separationOut[0];
   if (separationA >= limit) {
     separatingAxis = edgeA + 1;
+    separatedDistance = separationA - radiusA - radiusB;
     return 0;
   }
   const dB0 = -(m0x * dx + m0y * dy);
@@ -525,6 +543,7 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   const separationB = separationOut[0];
   if (separationB >= limit) {
     separatingAxis = Axis.B + edgeB + 1;
+    separatedDistance = separationB - radiusA - radiusB;
     return 0;
   }
 

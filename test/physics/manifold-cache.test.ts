@@ -1,4 +1,6 @@
 import { describe, expect, it } from 'vitest';
+import { buildFulcrumWorld } from '../../scenes/build-fulcrum';
+import { tumbler } from '../../scenes/tumbler';
 import { ContactFlag, MC } from '../../src/dynamics/contact-store';
 import { collideReach } from '../../src/geometry/collide-reach';
 import { collidePacked } from '../../src/geometry/manifold';
@@ -23,6 +25,9 @@ interface Deviation {
   separation: number;
   normal: number;
   countMismatch: number;
+  /** contacts apart whose empty manifold the narrow phase kept, and those a fresh one gave points */
+  keptEmpty: number;
+  emptyMismatch: number;
 }
 
 /** the bodies' poses before a step: the ones its narrow phase saw */
@@ -48,9 +53,12 @@ function compare(world: World, poses: Poses, out: Deviation): void {
   const shapes = core.shapes;
   const cache = contacts.manifoldCache;
   for (let c = 0; c < contacts.slotCount; c++) {
-    if (contacts.alive[c] === 0 || contacts.pointCount[c] === 0) continue;
+    if (contacts.alive[c] === 0) continue;
     if ((contacts.flags[c] & ContactFlag.SENSOR) !== 0) continue;
-    out.touching++;
+    const empty = contacts.pointCount[c] === 0;
+    // an empty manifold is kept only from a collide call (CACHED): others were not looked at
+    if (empty && (contacts.flags[c] & ContactFlag.CACHED) === 0) continue;
+    if (!empty) out.touching++;
     const a = contacts.bodyA[c];
     const b = contacts.bodyB[c];
     const o = c * MC.STRIDE;
@@ -61,7 +69,8 @@ function compare(world: World, poses: Poses, out: Deviation): void {
     const tx = poses.qc[f] * dx + poses.qs[f] * dy;
     const ty = poses.qc[f] * dy - poses.qs[f] * dx;
     if (tx === cache[o + MC.TX] && ty === cache[o + MC.TY]) continue;
-    out.kept++;
+    if (empty) out.keptEmpty++;
+    else out.kept++;
     const sa = contacts.shapeA[c];
     const sb = contacts.shapeB[c];
     setReferenceHint(referenceOwnerOfId(contacts.pointId[2 * c]));
@@ -77,6 +86,10 @@ function compare(world: World, poses: Poses, out: Deviation): void {
       transformOf(poses, b),
       fresh,
     );
+    if (empty) {
+      if (fresh.pointCount > 0) out.emptyMismatch++;
+      continue;
+    }
     if (fresh.pointCount !== contacts.pointCount[c]) {
       out.countMismatch++;
       continue;
@@ -105,7 +118,16 @@ function compare(world: World, poses: Poses, out: Deviation): void {
 }
 
 function measure(world: World, steps: number): Deviation {
-  const out: Deviation = { kept: 0, touching: 0, point: 0, separation: 0, normal: 0, countMismatch: 0 };
+  const out: Deviation = {
+    kept: 0,
+    touching: 0,
+    point: 0,
+    separation: 0,
+    normal: 0,
+    countMismatch: 0,
+    keptEmpty: 0,
+    emptyMismatch: 0,
+  };
   const bodies = world.core.bodies;
   for (let i = 0; i < steps; i++) {
     const poses = {
@@ -158,5 +180,15 @@ describe('manifold cache', () => {
     expect(d.kept).toBeGreaterThan(0);
     expect(d.countMismatch).toBe(0);
     expectWithin(d, tolerance);
+  });
+
+  it('boxes tumbling in a turning drum: pairs found apart keep their empty manifold only while a fresh one is empty too', () => {
+    // the drum's walls reach over most boxes' boxes: the narrow phase skips a pair apart by d along
+    // an edge normal until it came closer by d less the contact reach (see updateContacts)
+    const { world } = buildFulcrumWorld(tumbler({ count: 200 }), { enableSleep: false });
+    const d = measure(world, 240);
+    // measured: 58,239 kept empty (159 without the skip, by the tolerance alone), none wrong
+    expect(d.keptEmpty).toBeGreaterThan(10_000);
+    expect(d.emptyMismatch).toBe(0);
   });
 });
