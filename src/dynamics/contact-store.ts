@@ -30,11 +30,11 @@ export enum MC {
   X1 = 8,
   Y1 = 9,
   /**
-   * for a manifold without points (in X0's place): a lower bound of the shapes' distance when it was
-   * computed, or -1 (see lastSeparatedDistance)
+   * for a manifold without points: a lower bound of the shapes' distance when it was computed, or -1
+   * (see lastSeparatedDistance)
    */
-  GAP = 6,
-  STRIDE = 10,
+  GAP = 10,
+  STRIDE = 11,
 }
 
 /**
