@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { createRandom } from '../../scenes/random';
+import { H } from '../../src/dynamics/joints/hinge-batch';
+import { P } from '../../src/dynamics/joints/hinge-paths';
 import { type Body, type Joint, Shape, World } from '../../src/index';
 
 // Chains and ropes of free hinges (no limit, motor or spring; each body on at most two) are solved
@@ -50,6 +52,11 @@ function hangingChain(world: World, top: Body, x: number, y: number, count: numb
 }
 
 describe('paths of free hinges', () => {
+  it("lays a path hinge's record out as the hinge batch's, then its own fields", () => {
+    // HingePaths hands its records to writeStepData and turnStepData, which write H's fields
+    expect(P.EX).toBe(H.STRIDE);
+  });
+
   it('chains hung in any order and sense: each hinge carries the weight below it, joints exact', () => {
     const world = new World({ enableSleep: false });
     const ceiling = world.createBody();
