@@ -21,7 +21,7 @@ enum Balance {
 }
 
 /**
- * How much worse than right after its last rebuild (see DynamicTree.shape) a tree may get and still be
+ * How much worse than right after its last rebuild (see DynamicTree.refitAll) a tree may get and still be
  * refitted in place when many of its proxies moved, instead of rebuilt. An enum for the reason above.
  */
 enum Refit {
@@ -63,7 +63,7 @@ export class DynamicTree {
   private moved: Int32Array = new Int32Array(16);
   private movedCount = 0;
   private isMoved: Uint8Array;
-  /** `shape` of the tree right after its last rebuild (0: not known yet) */
+  /** the tree's shape (see refitAll) right after its last rebuild (0: not known yet) */
   private builtShape = 0;
 
   constructor(initialCapacity = 16) {
@@ -353,21 +353,15 @@ export class DynamicTree {
     }
     this.root = this.build(0, n);
     this.parent[this.root] = Node.NULL;
-    this.builtShape = this.shape();
+    // the build's boxes are tight already: the walk only measures the tree's shape
+    this.builtShape = this.refitAll();
   }
 
   /**
-   * The summed perimeters of the internal nodes over the root's perimeter: the cost of the boxes a
-   * query opens, whatever the scene's size. Grows as moving proxies leave their neighbours.
+   * Makes every internal box the union of its children's again, children first, and returns the
+   * tree's shape: the summed perimeters of the internal nodes over the root's, the cost of the boxes
+   * a query opens whatever the scene's size. It grows as moving proxies leave their neighbours.
    */
-  private shape(): number {
-    let sum = 0;
-    for (let i = 0; i < this.height.length; i++) if (this.height[i] > 0) sum += this.perimeter(i);
-    const root = this.perimeter(this.root);
-    return root > 0 ? sum / root : 0;
-  }
-
-  /** Makes every internal box the union of its children's again, children first; returns `shape`. */
   private refitAll(): number {
     const order =
       this.buildLeaves.length >= this.parent.length ? this.buildLeaves : new Int32Array(this.parent.length);
