@@ -127,7 +127,12 @@ export function updateContacts(core: WorldCore): void {
     const reach = sensor ? 0 : speculative;
     if (gap > reach + VERTEX_PAIR_MIN_GAP) {
       // the shapes are further apart than the boxes, and a point's separation is at most the vertex-pair
-      // tolerance below the shapes' distance (manifold-polygon.ts): the manifold would be empty
+      // tolerance below the shapes' distance (manifold-polygon.ts): the manifold would be empty, and
+      // if it was empty already, nothing changes (a hanging grid's diagonal neighbours, every step)
+      if (pointCount[c] === 0) {
+        contactFlags[c] = flags & ~ContactFlag.CACHED;
+        continue;
+      }
       manifold.pointCount = 0;
       flags &= ~ContactFlag.CACHED;
     } else {
