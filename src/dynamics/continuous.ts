@@ -1,5 +1,6 @@
 import { IntList } from '../collision/int-list';
 import { packedBounds } from '../geometry/bounds';
+import { makeDistanceOutput, shapeDistance } from '../geometry/distance';
 import { minExtent } from '../geometry/extent';
 import { Pack } from '../geometry/packed';
 import { makeProxy, makeShapeProxy, type ShapeProxy } from '../geometry/shape-proxy';
@@ -27,6 +28,9 @@ const candidates = new IntList(64);
 const start = makeTransform();
 const bounds = makeBounds();
 const xf = makeTransform();
+/** the other body's transform and the disc's distance to it at the start, for discSinksIn */
+const otherXf = makeTransform();
+const gap = makeDistanceOutput();
 const STATIC_TREE_MASK = 1;
 /** static, kinematic and dynamic trees */
 const ALL_TREES_MASK = 7;
@@ -157,6 +161,14 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
         input.proxyB = discProxy;
         timeOfImpact(input, output, slop);
         input.proxyB = shapeProxy;
+        if (output.state === 'hit' && output.fraction === 0 && discSinksIn(core, ob, slop)) {
+          // the core touches already, and the step would take it in or through: nothing but the
+          // solver's contact held a plank spinning against a thin wall, and it slipped through
+          // (the disc pinned in front of the wall, the plank through it a step later); it stays
+          // where it was this step, with its velocity, for the contact to stop
+          minFraction = 0;
+          input.maxFraction = 0;
+        }
       }
       if (
         (output.state === 'hit' || output.state === 'failed') &&
@@ -176,6 +188,26 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
     bodies.updateCenter(b);
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) core.refreshShapeBounds(s);
   }
+}
+
+/**
+ * Whether the disc of the body being swept (input.sweepB, see loadDisc), which touches body `other`'s
+ * shape (input.proxyA) at the start of the step, moves towards it over the step (its centre by more
+ * than a quarter of the slop along the normal between them), whether it stops in it or goes through.
+ */
+function discSinksIn(core: WorldCore, other: number, slop: number): boolean {
+  const bodies = core.bodies;
+  otherXf.p.x = bodies.px[other];
+  otherXf.p.y = bodies.py[other];
+  otherXf.q.c = bodies.qc[other];
+  otherXf.q.s = bodies.qs[other];
+  shapeDistance(input.proxyA, otherXf, discProxy, start, true, gap);
+  getSweepTransform(input.sweepB, 1, xf);
+  const lx = discProxy.x[0];
+  const ly = discProxy.y[0];
+  const dx = xf.p.x + xf.q.c * lx - xf.q.s * ly - (start.p.x + start.q.c * lx - start.q.s * ly);
+  const dy = xf.p.y + xf.q.s * lx + xf.q.c * ly - (start.p.y + start.q.s * lx + start.q.c * ly);
+  return dx * gap.normalX + dy * gap.normalY < -0.25 * slop;
 }
 
 /** A one-point proxy at the shape's centroid with a quarter of its smallest half-thickness as radius. */
