@@ -169,7 +169,7 @@ export function updateContacts(core: WorldCore): void {
         // shapes found apart stay apart (the manifold empty) while they came closer by less than
         // their distance then, less the reach (the vertex-pair tolerance as for `gap` above)
         if (pointCount[c] === 0 && moved < cache[o + MC.GAP] - reach - VERTEX_PAIR_MIN_GAP) continue;
-        if (moved < tolerance) {
+        if (moved < tolerance && pointCount[c] > 0) {
           // the manifold holds: carried along with body A, separations and impulses kept
           const count = pointCount[c];
           if (!sensor && count > 0) {

@@ -1,5 +1,6 @@
 import type { Transform } from '../math/vec2';
 import { collideReach } from './collide-reach';
+import { noteSeparatedDistance } from './manifold-polygon';
 import { Pack } from './packed';
 import type { Manifold } from './types';
 
@@ -58,7 +59,10 @@ export function collideCircles(
   const dy = by - ay;
   const distance = Math.sqrt(dx * dx + dy * dy);
   const separation = distance - rA - rB;
-  if (!(separation < speculativeDistance)) return;
+  if (!(separation < speculativeDistance)) {
+    noteSeparatedDistance(separation);
+    return;
+  }
   // concentric circles have no preferred direction: push along +y
   const nx = distance > 0 ? dx / distance : 0;
   const ny = distance > 0 ? dy / distance : 1;
@@ -113,7 +117,10 @@ export function collideCircleRoundedSegment(
   const dy = cy - py;
   const distance = Math.sqrt(dx * dx + dy * dy);
   const separation = distance - rA - rB;
-  if (!(separation < speculativeDistance)) return;
+  if (!(separation < speculativeDistance)) {
+    noteSeparatedDistance(separation);
+    return;
+  }
   let ux: number;
   let uy: number;
   if (distance > 0) {
@@ -164,7 +171,11 @@ export function collideCirclePolygon(
       edge = i;
     }
   }
-  if (maxSeparation - radius >= speculativeDistance) return;
+  // beyond an edge's line: at least that far apart
+  if (maxSeparation - radius >= speculativeDistance) {
+    noteSeparatedDistance(maxSeparation - radius);
+    return;
+  }
   const k1 = baseB + Pack.VERTICES + Pack.VERTEX_STRIDE * edge;
   const k2 = baseB + Pack.VERTICES + Pack.VERTEX_STRIDE * (edge + 1 === n ? 0 : edge + 1);
   const v1x = data[k1];
@@ -195,6 +206,9 @@ export function collideCirclePolygon(
     }
   }
   const separation = distance - radius;
-  if (!(separation < speculativeDistance)) return;
+  if (!(separation < speculativeDistance)) {
+    noteSeparatedDistance(separation);
+    return;
+  }
   writeFromB(xfB, ux, uy, cx - rA * ux, cy - rA * uy, px + rB * ux, py + rB * uy, separation, out);
 }

@@ -117,6 +117,11 @@ export function lastSeparatedDistance(): number {
   return separatedDistance;
 }
 
+/** For the other colliders: the pair was found apart, `distance` (less both radii) is at most its distance. */
+export function noteSeparatedDistance(distance: number): void {
+  separatedDistance = distance;
+}
+
 /** The axis that separated the pair in the last collide call (0 when none did, or not a polygon pair). */
 export function lastSeparatingAxis(): number {
   return separatingAxis;
