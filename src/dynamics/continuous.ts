@@ -1,3 +1,4 @@
+import { NO_MOTION } from '../collision/broad-phase';
 import { IntList } from '../collision/int-list';
 import { packedBounds } from '../geometry/bounds';
 import { makeDistanceOutput, shapeDistance } from '../geometry/distance';
@@ -93,7 +94,7 @@ export function solveBullets(core: WorldCore): void {
     const k = 4 * i;
     sweepAgainst(core, b, bulletStarts, k, ALL_TREES_MASK);
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-      broad.moveProxy(shapes.proxyKey[s], shapes, s);
+      broad.moveProxy(shapes.proxyKey[s], shapes, s, NO_MOTION);
     }
   }
   bulletCount = 0;

@@ -32,6 +32,8 @@ import { makeSoftness, type Softness } from './softness';
 import type { WorldCore } from './world-core';
 
 const contactSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+/** a body's displacement over the step, handed to BroadPhase.moveProxy for each of its shapes */
+const proxyMotion = new Float64Array(2);
 const staticSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
 
 /** Lists the awake non-static bodies by ascending slot. */
@@ -388,8 +390,11 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
       }
       solveContinuous(core, b);
     }
+    // the body's displacement at this step's velocity: its boxes reach that far ahead
+    proxyMotion[0] = vx * dt;
+    proxyMotion[1] = vy * dt;
     for (let sh = colShapeHead[b]; sh !== -1; sh = shapeNext[sh]) {
-      broad.moveProxy(proxyKey[sh], shapes, sh);
+      broad.moveProxy(proxyKey[sh], shapes, sh, proxyMotion);
     }
   }
   if (continuous) solveBullets(core);

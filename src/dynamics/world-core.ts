@@ -1,4 +1,4 @@
-import { BroadPhase, ProxyType } from '../collision/broad-phase';
+import { BroadPhase, NO_MOTION, ProxyType } from '../collision/broad-phase';
 import { IntList } from '../collision/int-list';
 import { PairSet } from '../collision/pair-set';
 import { makeSettings, type Settings } from '../core/settings';
@@ -173,7 +173,7 @@ export class WorldCore {
     for (let s = this.bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
       this.refreshShapeBounds(s);
       const key = shapes.proxyKey[s];
-      if (!this.broadPhase.moveProxy(key, shapes, s)) {
+      if (!this.broadPhase.moveProxy(key, shapes, s, NO_MOTION)) {
         this.broadPhase.bufferMove(key);
       }
     }

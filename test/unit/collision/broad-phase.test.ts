@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import {
   BroadPhase,
   type BroadPhaseRayCastVisitor,
+  NO_MOTION,
   type ProxyType,
   proxyKeyId,
   proxyKeyType,
@@ -36,9 +37,31 @@ interface Proxy {
 
 const MARGIN = 0.1;
 const overlaps = (a: Box, b: Box) => !(a[0] > b[2] || a[1] > b[3] || a[2] < b[0] || a[3] < b[1]);
-const fatten = (b: Box, type: ProxyType): Box => {
+/** A box grown by the margin and reaching twice the displacement (dx, dy) ahead; static: neither. */
+const fatten = (b: Box, type: ProxyType, dx = 0, dy = 0): Box => {
   const m = type === 0 ? 0 : MARGIN;
-  return [b[0] - m, b[1] - m, b[2] + m, b[3] + m];
+  const ax = type === 0 ? 0 : 2 * dx;
+  const ay = type === 0 ? 0 : 2 * dy;
+  return [
+    b[0] - m + Math.min(ax, 0),
+    b[1] - m + Math.min(ay, 0),
+    b[2] + m + Math.max(ax, 0),
+    b[3] + m + Math.max(ay, 0),
+  ];
+};
+/** Whether a fat box may stay: it holds the tight box and is nowhere more than margin + stretch larger than `next`. */
+const keeps = (fat: Box, tight: Box, next: Box, type: ProxyType, dx: number, dy: number): boolean => {
+  const slack = type === 0 ? 0 : MARGIN + 2 * Math.abs(dx) + 2 * Math.abs(dy);
+  return (
+    fat[0] <= tight[0] &&
+    fat[1] <= tight[1] &&
+    fat[2] >= tight[2] &&
+    fat[3] >= tight[3] &&
+    fat[0] >= next[0] - slack &&
+    fat[1] >= next[1] - slack &&
+    fat[2] <= next[2] + slack &&
+    fat[3] <= next[3] + slack
+  );
 };
 
 function pairsOf(list: IntList, from = 0): [number, number][] {
@@ -111,10 +134,14 @@ function runScene(seed: number, steps: number, check: boolean): number[] {
         const dy = (random() - 0.5) * 0.3;
         const nb: Box = [b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy];
         tight.set(key, nb);
-        const inside = p.fat[0] <= nb[0] && p.fat[1] <= nb[1] && p.fat[2] >= nb[2] && p.fat[3] >= nb[3];
-        expect(bp.moveProxy(key, box(nb[0], nb[1], nb[2], nb[3]), 0)).toBe(!inside);
-        if (!inside) {
-          p.fat = fatten(nb, p.type);
+        // the expected displacement: none, or about this move's again
+        const ahead = random() < 0.3 ? 0 : 1 + (random() - 0.5) * 0.4;
+        const motion = Float64Array.of(ahead * dx, ahead * dy);
+        const next = fatten(nb, p.type, motion[0], motion[1]);
+        const kept = keeps(p.fat, nb, next, p.type, motion[0], motion[1]);
+        expect(bp.moveProxy(key, box(nb[0], nb[1], nb[2], nb[3]), 0, motion)).toBe(!kept);
+        if (!kept) {
+          p.fat = next;
           moved.add(key);
         }
       }
@@ -166,8 +193,8 @@ describe('BroadPhase', () => {
     expect(bp.getFatBounds(s, makeBounds())).toEqual({ minX: 0, minY: 0, maxX: 1, maxY: 1 });
     expect(bp.getFatBounds(d, makeBounds())).toEqual({ minX: -0.5, minY: -0.5, maxX: 1.5, maxY: 1.5 });
     expect(bp.moveCount).toBe(2);
-    expect(bp.moveProxy(d, box(0.3, 0.3, 1.3, 1.3), 0)).toBe(false);
-    expect(bp.moveProxy(d, box(0.6, 0, 1.6, 1), 0)).toBe(true);
+    expect(bp.moveProxy(d, box(0.3, 0.3, 1.3, 1.3), 0, NO_MOTION)).toBe(false);
+    expect(bp.moveProxy(d, box(0.6, 0, 1.6, 1), 0, NO_MOTION)).toBe(true);
     expect(bp.moveCount).toBe(2);
     const out = new IntList();
     bp.updatePairs(new PairSet(), out);
@@ -179,6 +206,34 @@ describe('BroadPhase', () => {
     out.clear();
     bp.updatePairs(new PairSet(), out);
     expect(out.length).toBe(0);
+  });
+
+  it('reaches twice the displacement ahead of a moving box, and shrinks back when it stops', () => {
+    const bp = new BroadPhase(0.1);
+    const key = bp.createProxy(0, 0, 1, 1, 2, 1, false);
+    const bounds = makeBounds();
+    const motion = Float64Array.of(0.15, 0);
+    // a box moving 0.15 a step to the right: leaves the unstretched fat box (margin 0.1) at once,
+    // then gets one reaching 0.1 + 0.3 ahead, and leaves that only every third step
+    const moves: boolean[] = [];
+    for (let step = 1; step <= 7; step++) {
+      const x = 0.15 * step;
+      moves.push(bp.moveProxy(key, box(x, 0, x + 1, 1), 0, motion));
+      if (step === 1) {
+        const b = bp.getFatBounds(key, bounds);
+        expect(b.minX).toBeCloseTo(0.15 - 0.1, 12);
+        expect(b.maxX).toBeCloseTo(1.15 + 0.1 + 0.3, 12);
+        expect([b.minY, b.maxY]).toEqual([-0.1, 1.1]);
+      }
+    }
+    expect(moves).toEqual([true, false, false, true, false, false, true]);
+    // at rest where it is: the box stretched ahead is more than the margin larger than needed, and
+    // shrinks to the tight box grown by the margin
+    expect(bp.moveProxy(key, box(1.05, 0, 2.05, 1), 0, NO_MOTION)).toBe(true);
+    const b = bp.getFatBounds(key, bounds);
+    expect(b.minX).toBeCloseTo(0.95, 12);
+    expect(b.maxX).toBeCloseTo(2.15, 12);
+    expect(bp.moveProxy(key, box(1.05, 0, 2.05, 1), 0, NO_MOTION)).toBe(false);
   });
 
   it('forgets a buffered proxy that is destroyed', () => {
