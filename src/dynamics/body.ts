@@ -205,6 +205,7 @@ export class Body {
 
   private moved(b: number): void {
     const core = this.world.core;
+    core.poseEpoch++;
     core.bodies.updateCenter(b);
     core.syncBodyProxies(b);
     core.wake(b);

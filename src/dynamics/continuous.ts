@@ -187,6 +187,7 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
     bodies.px[b] = xf.p.x;
     bodies.py[b] = xf.p.y;
     bodies.updateCenter(b);
+    core.poseEpoch++;
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) core.refreshShapeBounds(s);
   }
 }

@@ -101,7 +101,7 @@ function prepareJoints(core: WorldCore, h: number): void {
     bodies.invInertia,
     core.jointEpoch,
   );
-  core.hingeBatch.prepare(active, core.jointTree.iterative, ctx, rebuilt);
+  core.hingeBatch.prepare(active, core.jointTree.iterative, ctx, rebuilt, core.poseEpoch);
   core.jointTree.prepare(ctx);
 }
 
@@ -213,7 +213,7 @@ export function solve(core: WorldCore, dt: number): void {
     // bodies before the next substep projects again (with the same factorization; gravity and damping
     // only add and scale), P (P v + g) = P (v + g), and this projection would change nothing then.
     if (coupled || i === subSteps - 1) tree.project(state, 0, false);
-    hinges.relax(state);
+    hinges.relax(state, i === subSteps - 1);
     for (let j = 0; j < iterativeCount; j++) {
       iterative[j].solve(ctx, false);
       if (iterative[j].treeAxialMass > 0) tree.project(state, 0, false);

@@ -92,6 +92,12 @@ export class WorldCore {
    * (which the tree compares itself): joint setters and bodies' mass, inertia or type (updateMass).
    */
   jointEpoch = 0;
+  /**
+   * Counts the poses and masses set other than by the solver's integration (a body placed by the
+   * user or moved back by continuous collision, a mass or centre of mass worked out anew): step data
+   * carried from one step to the next holds only while it stays the same (see HingeBatch.relax).
+   */
+  poseEpoch = 0;
   /** the plain hinges of the current step, solved from flat arrays */
   readonly hingeBatch = new HingeBatch();
   readonly jointContext: JointContext = {
@@ -182,6 +188,7 @@ export class WorldCore {
   /** Mass, centre of mass, inertia and extents of a body from its shapes. */
   updateMass(b: number): void {
     this.jointEpoch++;
+    this.poseEpoch++;
     const bodies = this.bodies;
     const shapes = this.shapes;
     const kind = bodies.kind[b];

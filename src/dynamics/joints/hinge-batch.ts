@@ -156,7 +156,11 @@ export class HingeBatch {
   ids = new Int32Array(0);
   /** each hinge's anchors (Anchor layout) */
   anchors = new Float64Array(0);
-  readonly joints: Joint[] = [];
+  joints: Joint[] = [];
+  /** the last batch's records and hinges while classify makes the next (two sets, swapped) */
+  private spareData = new Float64Array(0);
+  private spareAnchors = new Float64Array(0);
+  private spareJoints: Joint[] = [];
   /** the colouring that orders the hinges (see orderByColor) */
   private readonly coloring = new GraphColoring();
   /** the active joints that are not in the batch, in their order */
@@ -165,6 +169,13 @@ export class HingeBatch {
   invH = 0;
   /** the iterative joints that are not in the batch, in their order */
   readonly otherIterative: Joint[] = [];
+  /**
+   * The world's pose epoch when the step began, and whether its last relax carried the step data
+   * over to the next step (see relax): then, unless a pose changed since, the next step needs no
+   * turnStepData.
+   */
+  private stepPoseEpoch = -1;
+  private carried = false;
 
   /**
    * Prepares the step's joints (`active`, after the tree's build): the plain hinges are packed here,
@@ -172,37 +183,78 @@ export class HingeBatch {
    * (`rebuilt`), the hinges are the same as last step and only their step data is refreshed, from
    * the anchors kept here, with last step's impulses.
    */
-  prepare(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext, rebuilt: boolean): void {
-    if (rebuilt) this.classify(active, iterative, ctx);
-    else {
-      turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count);
-    }
+  prepare(
+    active: readonly Joint[],
+    iterative: readonly Joint[],
+    ctx: JointContext,
+    rebuilt: boolean,
+    poseEpoch: number,
+  ): void {
+    const carry = this.carried && this.stepPoseEpoch === poseEpoch;
+    if (rebuilt) this.classify(active, iterative, ctx, carry);
+    else if (!carry) turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count);
+    this.carried = false;
+    this.stepPoseEpoch = poseEpoch;
     for (const joint of this.otherActive) joint.prepare(ctx);
   }
 
-  private classify(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext): void {
+  /**
+   * Makes the batch anew. With `carry` (the last step's relax carried the step data over and no pose
+   * or mass was set since), a hinge that stays takes its carried record along to its new place
+   * instead of step data worked out afresh: the same bits as when the batch is kept.
+   */
+  private classify(
+    active: readonly Joint[],
+    iterative: readonly Joint[],
+    ctx: JointContext,
+    carry: boolean,
+  ): void {
     // the last batch's hinges take their impulses back (those that stay bring them in again)
-    for (let i = 0; i < this.count; i++) this.joints[i].unpackHinge(this.data, i * H.STRIDE, this.invH);
+    const previous = this.joints;
+    for (let i = 0; i < this.count; i++) {
+      previous[i].unpackHinge(this.data, i * H.STRIDE, this.invH);
+      if (carry) previous[i].carriedSlot = i;
+    }
+    const previousCount = this.count;
+    const previousData = this.data;
+    const previousAnchors = this.anchors;
+    this.data = this.spareData;
+    this.anchors = this.spareAnchors;
+    this.spareData = previousData;
+    this.spareAnchors = previousAnchors;
+    const joints = this.spareJoints;
+    this.spareJoints = previous;
+    this.joints = joints;
     this.count = 0;
-    this.joints.length = 0;
+    joints.length = 0;
     this.otherIterative.length = 0;
     this.otherActive.length = 0;
     for (const joint of active) {
-      if (joint.isPlainHinge()) this.joints.push(joint);
+      if (joint.isPlainHinge()) joints.push(joint);
       else if (!joint.onPath) this.otherActive.push(joint);
     }
     for (const joint of iterative) if (!joint.isPlainHinge()) this.otherIterative.push(joint);
     this.orderByColor(ctx);
-    const n = this.joints.length;
+    const n = joints.length;
     if (this.data.length < n * H.STRIDE) {
       const capacity = Math.max(64, 2 * n);
       this.data = growF64(this.data, capacity * H.STRIDE);
-      this.ids = growI32(this.ids, capacity * 2);
       this.anchors = growF64(this.anchors, capacity * Anchor.STRIDE);
     }
+    if (this.ids.length < 2 * n) this.ids = growI32(this.ids, Math.max(128, 4 * n));
     for (let i = 0; i < n; i++) {
-      this.joints[i].packHinge(ctx, this.data, this.ids, this.anchors, i);
+      const joint = joints[i];
+      joint.packHinge(ctx, this.data, this.ids, this.anchors, i);
+      const k = joint.carriedSlot;
+      if (k >= 0) {
+        this.data.set(previousData.subarray(k * H.STRIDE, (k + 1) * H.STRIDE), i * H.STRIDE);
+        this.anchors.set(
+          previousAnchors.subarray(k * Anchor.STRIDE, (k + 1) * Anchor.STRIDE),
+          i * Anchor.STRIDE,
+        );
+      }
     }
+    for (let i = 0; i < previousCount; i++) previous[i].carriedSlot = -1;
     this.count = n;
   }
 
@@ -356,8 +408,11 @@ export class HingeBatch {
    * with the bodies and works out K's inverse anew, and keeps both for the next substep's warm start
    * and soft pass (velocities change until then, positions do not). A loop of its own: one loop for
    * both passes, with a flag, ran the soft pass 1.1x and this one 1.27x slower (micro-benchmark).
+   * The step's `last` relax also carries the step data over to the next step: the anchors it turned
+   * are those at the bodies' final rotation (the step's start for the next one), and the centres'
+   * offset moves by the step's translations; turnStepData would work out the same to rounding.
    */
-  relax(state: Float64Array): void {
+  relax(state: Float64Array, last: boolean): void {
     if (this.count === 0) return; // as in warmStart
     const d = this.data;
     const ids = this.ids;
@@ -387,6 +442,14 @@ export class HingeBatch {
       d[base + H.RAY] = rAy;
       d[base + H.RBX] = rBx;
       d[base + H.RBY] = rBy;
+      if (last) {
+        d[base + H.RAX0] = rAx;
+        d[base + H.RAY0] = rAy;
+        d[base + H.RBX0] = rBx;
+        d[base + H.RBY0] = rBy;
+        d[base + H.DCX] += state[sb + S.DPX] - state[sa + S.DPX];
+        d[base + H.DCY] += state[sb + S.DPY] - state[sa + S.DPY];
+      }
       // K's inverse, as storeInverseMass, but kept in locals for the impulse below (reading it back
       // from the record cost the grid 3 %)
       const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
@@ -419,6 +482,7 @@ export class HingeBatch {
       state[sb + S.VY] = vBy + mB * py;
       state[sb + S.W] = wB + iB * (rBx * py - rBy * px);
     }
+    if (last) this.carried = true;
   }
 }
 

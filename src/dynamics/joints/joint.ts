@@ -62,6 +62,8 @@ export abstract class Joint {
   inTree = false;
   /** @internal this hinge's record in the hinge batch while it is there (see HingeBatch), or -1 */
   batchIndex = -1;
+  /** @internal this hinge's slot in the last hinge batch while the batch is made anew and takes it along */
+  carriedSlot = -1;
   /** @internal set each step: a tree joint that HingePaths solves (it needs no prepare then) */
   onPath = false;
   /** @internal set each step: this hinge closes a loop of the tree; its point rows use closureMass */
