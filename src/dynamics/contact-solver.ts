@@ -484,7 +484,9 @@ export function solveContacts(
     let vt = (vBx - vAx) * tx + (vBy - vAy) * ty + wB * rtB - wA * rtA;
     let maxFriction = friction * d[p + P.NIMP];
     let old = d[p + P.TIMP];
-    let next = Math.max(-maxFriction, Math.min(old - d[p + P.TMASS] * vt, maxFriction));
+    // clamped by compares, not Math.max/min: V8 adds NaN and -0 checks to those (pyramid 0.99x)
+    let next = old - d[p + P.TMASS] * vt;
+    next = next > maxFriction ? maxFriction : next < -maxFriction ? -maxFriction : next;
     let impulse = next - old;
     d[p + P.TIMP] = next;
     let Px = impulse * tx;
@@ -502,7 +504,8 @@ export function solveContacts(
       vt = (vBx - vAx) * tx + (vBy - vAy) * ty + wB * rtB - wA * rtA;
       maxFriction = friction * d[p + P.NIMP];
       old = d[p + P.TIMP];
-      next = Math.max(-maxFriction, Math.min(old - d[p + P.TMASS] * vt, maxFriction));
+      next = old - d[p + P.TMASS] * vt;
+      next = next > maxFriction ? maxFriction : next < -maxFriction ? -maxFriction : next;
       impulse = next - old;
       d[p + P.TIMP] = next;
       Px = impulse * tx;
