@@ -484,8 +484,8 @@ export function solveContacts(
     let vt = (vBx - vAx) * tx + (vBy - vAy) * ty + wB * rtB - wA * rtA;
     let maxFriction = friction * d[p + P.NIMP];
     let old = d[p + P.TIMP];
-    // clamped by compares, not Math.max/min: V8 adds NaN and -0 checks to those (pyramid 0.99x)
     let next = old - d[p + P.TMASS] * vt;
+    // biome-ignore lint/complexity/useMathMinMax: compares, as V8 adds NaN and -0 checks to Math.max/min (pyramid 0.99x)
     next = next > maxFriction ? maxFriction : next < -maxFriction ? -maxFriction : next;
     let impulse = next - old;
     d[p + P.TIMP] = next;
@@ -505,6 +505,7 @@ export function solveContacts(
       maxFriction = friction * d[p + P.NIMP];
       old = d[p + P.TIMP];
       next = old - d[p + P.TMASS] * vt;
+      // biome-ignore lint/complexity/useMathMinMax: as above
       next = next > maxFriction ? maxFriction : next < -maxFriction ? -maxFriction : next;
       impulse = next - old;
       d[p + P.TIMP] = next;
