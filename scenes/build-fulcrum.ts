@@ -1,5 +1,5 @@
 /** Builds a scene in Fulcrum through its public API (../shared/API.md). */
-import { Shape, World } from '../src/index';
+import { Shape, type ShapeDef, World } from '../src/index';
 import type { Scene, SceneShape } from './types';
 
 type WorldDef = NonNullable<ConstructorParameters<typeof World>[0]>;
@@ -29,12 +29,15 @@ function geometry(shape: SceneShape) {
   }
 }
 
-/** only the material fields the scene sets, so Fulcrum's defaults apply to the rest */
-function material(shape: SceneShape): { density?: number; friction?: number; restitution?: number } {
-  const def: { density?: number; friction?: number; restitution?: number } = {};
+type Material = Pick<ShapeDef, 'density' | 'friction' | 'restitution' | 'filter'>;
+
+/** only the material and filter fields the scene sets, so Fulcrum's defaults apply to the rest */
+function material(shape: SceneShape): Material {
+  const def: Material = {};
   if (shape.density !== undefined) def.density = shape.density;
   if (shape.friction !== undefined) def.friction = shape.friction;
   if (shape.restitution !== undefined) def.restitution = shape.restitution;
+  if (shape.filter !== undefined) def.filter = { ...shape.filter };
   return def;
 }
 

@@ -2,6 +2,9 @@
 import { GRAVITY } from './common';
 import type { Scene, SceneBody, SceneJoint } from './types';
 
+/** the grid's circles do not collide with each other (category 2, mask all but 2), as in Box2D's */
+const NODE_FILTER = { categoryBits: 2, maskBits: 0xffff & ~2 };
+
 /**
  * `size` x `size` dynamic circles (radius 0.4, density 1) 1 m apart, each linked to its right and
  * lower neighbours by revolute joints at the midpoint; the top row is pinned at the circles' centres
@@ -20,7 +23,7 @@ export function jointGrid({ size = 40 }: { size?: number } = {}): Scene {
       bodies.push({
         type: 'dynamic',
         position: { x, y },
-        shapes: [{ kind: 'circle', radius: 0.4 }],
+        shapes: [{ kind: 'circle', radius: 0.4, filter: NODE_FILTER }],
         tag: 'node',
       });
       const self = index(row, column);

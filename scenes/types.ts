@@ -12,6 +12,11 @@ export interface ShapeMaterial {
   density?: number; // kg/m^2, default 1
   friction?: number; // default 0.6
   restitution?: number; // default 0
+  /**
+   * Collision filter, Box2D's: two shapes collide when each one's category has a bit in the other's
+   * mask. Default: category 1, mask all bits.
+   */
+  filter?: { categoryBits: number; maskBits: number };
 }
 
 export type SceneShape = ShapeMaterial &

@@ -8,6 +8,7 @@
  * continuous on), b2World_Step with 4 substeps (the count Box2D v3 recommends), enableSleep false.
  * Units: metres, kilograms, seconds, radians, y up, like the scenes: nothing to map.
  * Mixing (Box2D's own): friction sqrt(a * b), restitution max(a, b).
+ * Collision filters: the scene's category and mask bits as the shape def's filter.
  */
 
 import type {
@@ -99,6 +100,12 @@ export class Box2dAdapter implements EngineAdapter {
     material.friction = shape.friction ?? 0.6;
     material.restitution = shape.restitution ?? 0;
     def.material = material;
+    if (shape.filter) {
+      const filter = def.filter;
+      filter.categoryBits = shape.filter.categoryBits;
+      filter.maskBits = shape.filter.maskBits;
+      def.filter = filter;
+    }
     return def;
   }
 

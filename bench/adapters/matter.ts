@@ -17,6 +17,8 @@
  * constraints (matter has no pin joint), and since matter constraints do not stop their bodies
  * colliding, every jointed body shares one negative collision group (so jointed bodies never collide
  * with each other, connected or not). Bullets are not mapped.
+ * Collision filters: category and mask bits as collisionFilter (a compound body takes its first
+ * shape's), overridden for jointed bodies by the shared negative group below.
  */
 import Matter, { type MatterBody, type MatterEngine } from 'matter-js';
 import { shapeCentroid } from '../../scenes/mass';
@@ -52,6 +54,11 @@ function part(shape: SceneShape): MatterBody {
     friction: shape.friction ?? 0.6,
     restitution: shape.restitution ?? 0,
     frictionAir: 0,
+    collisionFilter: {
+      group: 0,
+      category: shape.filter?.categoryBits ?? 1,
+      mask: shape.filter?.maskBits ?? 0xffffffff,
+    },
   };
   switch (shape.kind) {
     case 'circle': {
@@ -99,7 +106,11 @@ function createBody(b: SceneBody): Tracked {
     return { body: null, com: { x: 0, y: 0 } };
   }
   const parts = b.shapes.map(part);
-  const body = parts.length === 1 ? parts[0] : Body.create({ parts, frictionAir: 0 });
+  // matter filters the parent bodies: a compound one takes its first shape's filter
+  const body =
+    parts.length === 1
+      ? parts[0]
+      : Body.create({ parts, frictionAir: 0, collisionFilter: { ...parts[0].collisionFilter } });
   const com = { x: body.position.x, y: body.position.y };
   const angle = -(b.angle ?? 0);
   const origin = toPx(b.position);

@@ -7,6 +7,7 @@
  * distinct (friction, restitution) pair of the scene becomes a Material, with a ContactMaterial per
  * pair of them using Box2D's mixing (friction sqrt(a * b), restitution max(a, b)).
  * Units: metres, kilograms, seconds, radians, y up, like the scenes. Bullets are not mapped.
+ * Collision filters: category and mask bits as each shape's collisionGroup and collisionMask.
  */
 import {
   Body,
@@ -90,6 +91,10 @@ export class P2Adapter implements EngineAdapter {
       for (const shape of b.shapes) {
         const placed = place(shape);
         placed.shape.material = material(shape);
+        if (shape.filter) {
+          placed.shape.collisionGroup = shape.filter.categoryBits;
+          placed.shape.collisionMask = shape.filter.maskBits;
+        }
         body.addShape(placed.shape, placed.offset, placed.angle);
       }
       body.updateMassProperties();

@@ -5,6 +5,8 @@
  * Units: metres, kilograms, seconds, radians, y up, like the scenes. planck has no capsule shape: a
  * capsule is a box plus two end circles at half density, so its mass is exact; its rotational inertia
  * is slightly off. Rounded polygons lose their rounding radius.
+ * Collision filters: the scene's category and mask bits as the fixtures' filterCategoryBits and
+ * filterMaskBits.
  */
 import {
   Box,
@@ -79,6 +81,8 @@ export class PlanckAdapter implements EngineAdapter {
             density: (shape.density ?? 1) * part.densityScale,
             friction: shape.friction ?? 0.6,
             restitution: shape.restitution ?? 0,
+            filterCategoryBits: shape.filter?.categoryBits ?? 1,
+            filterMaskBits: shape.filter?.maskBits ?? 0xffff,
           });
         }
       }

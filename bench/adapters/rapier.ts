@@ -5,6 +5,8 @@
  * off per body (setCanSleep(false)), joints with contacts between their bodies disabled.
  * Units: metres, kilograms, seconds, radians, y up, like the scenes. Capsules are Rapier's vertical
  * capsule, turned and moved onto the scene's segment.
+ * Collision filters: category and mask bits as collision groups (membership << 16 | filter; the
+ * scenes' bits fit 16).
  */
 import RAPIER from '@dimforge/rapier2d-compat';
 import type { Scene, SceneBody, SceneShape } from '../../scenes/types';
@@ -80,6 +82,11 @@ export class RapierAdapter implements EngineAdapter {
           .setDensity(shape.density ?? 1)
           .setFriction(shape.friction ?? 0.6)
           .setRestitution(shape.restitution ?? 0);
+        // membership in the high 16 bits, filter in the low ones (the scene's filters fit 16 bits)
+        if (shape.filter)
+          desc.setCollisionGroups(
+            ((shape.filter.categoryBits & 0xffff) << 16) | (shape.filter.maskBits & 0xffff),
+          );
         world.createCollider(desc, body);
       }
       return body;
