@@ -79,6 +79,7 @@ function prepareJoints(core: WorldCore, h: number): void {
   ctx.qs = bodies.qs;
   ctx.lcx = bodies.lcx;
   ctx.lcy = bodies.lcy;
+  ctx.poseEpoch = core.poseEpoch;
   // the softness follows from the substep alone: worked out again only when it changes (a function
   // called once a step may stay in the interpreter, which puts every double it makes on the heap)
   if (ctx.h !== h) makeSoftness(JOINT_HERTZ, JOINT_DAMPING_RATIO, h, ctx.jointSoftness);
@@ -101,7 +102,7 @@ function prepareJoints(core: WorldCore, h: number): void {
     bodies.invInertia,
     core.jointEpoch,
   );
-  core.hingeBatch.prepare(active, core.jointTree.iterative, ctx, rebuilt, core.poseEpoch);
+  core.hingeBatch.prepare(active, core.jointTree.iterative, ctx, rebuilt);
   core.jointTree.prepare(ctx);
 }
 
@@ -197,7 +198,7 @@ export function solve(core: WorldCore, dt: number): void {
     for (let j = 0; j < iterativeCount; j++) iterative[j].warmStartGuarded(ctx);
     warmStartContacts(cc, state);
     // positions change only in integratePositions: the last substep's relax factorization still holds
-    if (i === 0) tree.factor(ctx);
+    if (i === 0) tree.factor(ctx, true, false);
     tree.project(state, treeBias, true);
     hinges.solve(state, jointSoft);
     for (let j = 0; j < iterativeCount; j++) {
@@ -208,7 +209,7 @@ export function solve(core: WorldCore, dt: number): void {
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, treeBias, false);
     integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed, i === subSteps - 1);
-    tree.factor(ctx);
+    tree.factor(ctx, false, i === subSteps - 1);
     // The projection is affine, v -> P v + c, with P a projector: when nothing else acts on the tree's
     // bodies before the next substep projects again (with the same factorization; gravity and damping
     // only add and scale), P (P v + g) = P (v + g), and this projection would change nothing then.

@@ -116,6 +116,7 @@ export class WorldCore {
     warmTurnLimit: 0,
     jointSoftness: { biasRate: 0, massScale: 1, impulseScale: 0 },
     tree: this.jointTree,
+    poseEpoch: 0,
   };
   readonly xfA: Transform = makeScratchTransform();
   readonly xfB: Transform = makeScratchTransform();

@@ -74,6 +74,58 @@ describe('paths of free hinges', () => {
     }
   });
 
+  it('a chain whose link is turned, moved, made heavier off-centre or stopped by a wall pulls its joints together', () => {
+    // The paths carry each step's anchors and factorization over to the next step; a pose or a mass
+    // set from outside (or by continuous collision) must drop them, else the joints stay apart.
+    const maxSeparation = (hinges: Joint[]) => Math.max(...hinges.map(separation));
+    const chain = () => {
+      const world = new World({ gravity: { x: 0, y: 0 }, enableSleep: false });
+      const ceiling = world.createBody();
+      const { links, hinges } = hangingChain(world, ceiling, 0, 0, 8, 3);
+      for (const link of links) {
+        link.setLinearDamping(2);
+        link.setAngularDamping(2);
+      }
+      for (let i = 0; i < 30; i++) world.step(DT);
+      return { world, links, hinges };
+    };
+    const settle = (world: World, hinges: Joint[]) => {
+      for (let i = 0; i < 120; i++) world.step(DT);
+      return maxSeparation(hinges);
+    };
+    {
+      // turned by 0.3 rad about its centre: its pins 0.25 m from it move 2 x 0.25 sin(0.15) apart
+      const { world, links, hinges } = chain();
+      expect(maxSeparation(hinges)).toBeLessThan(1e-9);
+      links[4].setAngle(0.3);
+      expect(maxSeparation(hinges)).toBeCloseTo(0.5 * Math.sin(0.15), 3);
+      expect(settle(world, hinges)).toBeLessThan(1e-4);
+    }
+    {
+      const { world, links, hinges } = chain();
+      links[4].setPosition({ x: 0.2, y: links[4].position.y });
+      expect(maxSeparation(hinges)).toBeGreaterThan(0.19);
+      expect(settle(world, hinges)).toBeLessThan(1e-4);
+    }
+    {
+      // a second box beside it: its centre of mass moves, the pins stay on the body; then spun
+      const { world, links, hinges } = chain();
+      links[4].createShape(Shape.box(0.05, LINK / 2, { x: 0.3, y: 0 }), { density: 1 / (0.1 * LINK) });
+      links[4].setAngularVelocity(20);
+      for (let i = 0; i < 180; i++) world.step(DT);
+      expect(settle(world, hinges)).toBeLessThan(1e-4);
+    }
+    {
+      // thrown sideways at 120 m/s against a wall: continuous collision moves links back in the step
+      const { world, links, hinges } = chain();
+      world.createBody({ position: { x: 4, y: 0 } }).createShape(Shape.box(0.1, 10));
+      for (const link of links) link.setLinearVelocity({ x: 120, y: 0 });
+      for (let i = 0; i < 120; i++) world.step(DT);
+      expect(settle(world, hinges)).toBeLessThan(1e-4);
+      for (const link of links) expect(link.position.x).toBeLessThan(4);
+    }
+  });
+
   it('a chain hung from a kinematic hook moving up at 2 m/s moves with it at once, as a rigid rope', () => {
     const world = new World({ enableSleep: false });
     const hook = world.createBody({ type: 'kinematic', linearVelocity: { x: 0, y: 2 } });

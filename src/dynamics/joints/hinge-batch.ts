@@ -183,13 +183,8 @@ export class HingeBatch {
    * (`rebuilt`), the hinges are the same as last step and only their step data is refreshed, from
    * the anchors kept here, with last step's impulses.
    */
-  prepare(
-    active: readonly Joint[],
-    iterative: readonly Joint[],
-    ctx: JointContext,
-    rebuilt: boolean,
-    poseEpoch: number,
-  ): void {
+  prepare(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext, rebuilt: boolean): void {
+    const poseEpoch = ctx.poseEpoch;
     const carry = this.carried && this.stepPoseEpoch === poseEpoch;
     if (rebuilt) this.classify(active, iterative, ctx, carry);
     else if (!carry) turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count);

@@ -63,9 +63,24 @@ export class HingePaths {
   private laid = false;
   /** per hinge: 1 when the joint's body A comes before it on its path, -1 when B does */
   private orientation = new Float64Array(0);
+  /**
+   * Whether the step's last factorization carried the step data over to the next step (see factor),
+   * and the world's pose epoch when that step began (JointContext.poseEpoch): while it holds, the
+   * next step starts from it, without turnStepData and without its first factorization.
+   */
+  private carried = false;
+  private stepPoseEpoch = -1;
+  /** set by prepare: the first factorization of this step is the last one of the step before */
+  private startFactored = false;
+  /** the hinges before the last clear, and whether add() laid them again in the same places */
+  private readonly previous: Joint[] = [];
+  private sameLayout = false;
 
   /** Empties the list (before a build adds the paths anew). */
   clear(): void {
+    this.previous.length = 0;
+    for (const joint of this.joints) this.previous.push(joint);
+    this.sameLayout = true;
     this.joints.length = 0;
     this.count = 0;
   }
@@ -83,6 +98,15 @@ export class HingePaths {
       this.anchors = growF64(this.anchors, Anchor.STRIDE * cap);
       this.orientation = growF64(this.orientation, cap);
     }
+    const sense = forward ? 1 : -1;
+    const link = startsPath ? 0 : 1;
+    if (
+      this.previous[k] !== joint ||
+      this.orientation[k] !== sense ||
+      this.data[k * P.STRIDE + P.LINK] !== link
+    ) {
+      this.sameLayout = false;
+    }
     const a = joint.bodyA.slot;
     const b = joint.bodyB.slot;
     this.ids[2 * k] = forward ? a : b;
@@ -93,8 +117,8 @@ export class HingePaths {
     this.anchors[o + Anchor.BX] = forward ? joint.localAnchorBx : joint.localAnchorAx;
     this.anchors[o + Anchor.BY] = forward ? joint.localAnchorBy : joint.localAnchorAy;
     this.laid = true;
-    this.orientation[k] = forward ? 1 : -1;
-    this.data[k * P.STRIDE + P.LINK] = startsPath ? 0 : 1;
+    this.orientation[k] = sense;
+    this.data[k * P.STRIDE + P.LINK] = link;
     // a hinge here is not prepared (HingePaths reads its step data itself): impulses of rows it had
     // before (limit, motor, spring) must not linger in its reaction torque
     joint.onPath = true;
@@ -103,20 +127,40 @@ export class HingePaths {
     this.count = k + 1;
   }
 
-  /** Reads the step's masses and anchors (once a step, before the first factorization). */
+  /**
+   * Reads the step's masses and anchors (once a step, before the first factorization), unless the
+   * last step carried them over and no pose or mass was set since (paths laid again the same way
+   * keep their records).
+   */
   prepare(ctx: JointContext): void {
     if (this.count === 0) return;
+    const carry =
+      this.carried &&
+      this.stepPoseEpoch === ctx.poseEpoch &&
+      (!this.laid || (this.sameLayout && this.count === this.previous.length));
     // the masses and centres change only with a body's mass, which lays the paths anew
-    if (this.laid) writeStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+    if (carry) {
+      // nothing to read
+    } else if (this.laid) writeStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
     else turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+    this.startFactored = carry;
+    this.carried = false;
+    this.stepPoseEpoch = ctx.poseEpoch;
     this.laid = false;
+  }
+
+  /** Whether the step's first factorization is the last one of the step before (see prepare). */
+  get factoredAtStart(): boolean {
+    return this.startFactored;
   }
 
   /**
    * Turns the anchors with the bodies, measures the separations and factors A at the current
-   * positions.
+   * positions. The step's `last` factorization also carries the step data over to the next step (as
+   * HingeBatch.relax does): its turned anchors and centres' offset are the next step's, and so is
+   * the factorization itself.
    */
-  factor(state: Float64Array): void {
+  factor(state: Float64Array, last: boolean): void {
     const d = this.data;
     const ids = this.ids;
     // the previous hinge's anchor on the body after it, and its D⁻¹ (times 0 at a path's start)
@@ -153,8 +197,18 @@ export class HingePaths {
       d[base + H.RAY] = rAy;
       d[base + H.RBX] = rBx;
       d[base + H.RBY] = rBy;
-      d[base + P.EX] = state[sb + S.DPX] - state[sa + S.DPX] + dcx + rBx - rAx;
-      d[base + P.EY] = state[sb + S.DPY] - state[sa + S.DPY] + dcy + rBy - rAy;
+      const dpx = state[sb + S.DPX] - state[sa + S.DPX];
+      const dpy = state[sb + S.DPY] - state[sa + S.DPY];
+      d[base + P.EX] = dpx + dcx + rBx - rAx;
+      d[base + P.EY] = dpy + dcy + rBy - rAy;
+      if (last) {
+        d[base + H.RAX0] = rAx;
+        d[base + H.RAY0] = rAy;
+        d[base + H.RBX0] = rBx;
+        d[base + H.RBY0] = rBy;
+        d[base + H.DCX] = dcx + dpx;
+        d[base + H.DCY] = dcy + dpy;
+      }
       // the coupling to the previous hinge through body A (B of that one): the velocity of this
       // hinge's rows per unit impulse on the previous one's, -(m 1 + i r⊥ q⊥ᵀ)
       const b11 = -link * (mA + iA * rAy * qy);
@@ -184,6 +238,7 @@ export class HingePaths {
       qx = rBx;
       qy = rBy;
     }
+    if (last) this.carried = true;
   }
 
   /**

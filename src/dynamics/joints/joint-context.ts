@@ -23,4 +23,6 @@ export interface JointContext {
   jointSoftness: Softness;
   /** the exact solver of tree-shaped joints (closures apply their impulses through it) */
   tree: JointTree;
+  /** the world's pose epoch at this step (WorldCore.poseEpoch: data carried over holds while it does) */
+  poseEpoch: number;
 }

@@ -633,10 +633,11 @@ export class JointTree {
 
   /**
    * Takes the tree rows' Jacobians and errors at the bodies' current positions, factors them and
-   * updates the closures' effective masses.
+   * updates the closures' effective masses. `first`: the step's first factorization (the paths may
+   * have it from the step before); `last`: the step's last.
    */
-  factor(ctx: JointContext): void {
-    if (this.paths.count > 0) this.paths.factor(ctx.state);
+  factor(ctx: JointContext, first: boolean, last: boolean): void {
+    if (this.paths.count > 0 && !(first && this.paths.factoredAtStart)) this.paths.factor(ctx.state, last);
     this.factorTree(ctx);
     if (this.closures.length > 0) this.closureMasses(ctx);
     if (this.axials.length > 0) this.axialMasses(ctx.state);
