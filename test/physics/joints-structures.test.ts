@@ -331,41 +331,34 @@ describe('joint structures', () => {
     // 16 loops: the hinge batch solves every hinge, and carries each step's anchors over to the next
     // step; a pose or a mass set from outside must drop them, else the joints keep the old anchors
     // and stay apart for good (0.149 m after the turn, step after step).
-    const build = () => {
+    // a 5 x 5 net of boxes (half size pitch / 5) `pitch` apart, hinged at the midpoints, damped
+    const build = (pitch: number, damping: number, velocity = 0, wall = false) => {
       const world = new World({ gravity: { x: 0, y: 0 }, enableSleep: false });
+      if (wall) world.createBody({ position: { x: 8, y: 0 } }).createShape(Shape.box(0.1, 10));
       const nodes: Body[] = [];
       const joints: Joint[] = [];
       for (let i = 0; i < 5; i++)
         for (let j = 0; j < 5; j++) {
           const b = world.createBody({
             type: 'dynamic',
-            position: { x: j, y: -i },
-            linearDamping: 2,
-            angularDamping: 2,
+            position: { x: pitch * j, y: -pitch * i },
+            linearVelocity: { x: velocity, y: 0 },
+            linearDamping: damping,
+            angularDamping: damping,
           });
-          b.createShape(Shape.box(0.2, 0.2), { filter: { groupIndex: -1 } });
+          b.createShape(Shape.box(pitch / 5, pitch / 5), { filter: { groupIndex: -1 } });
           nodes.push(b);
-          if (i > 0)
-            joints.push(
-              world.createJoint({
-                type: 'revolute',
-                bodyA: nodes[5 * (i - 1) + j],
-                bodyB: b,
-                anchor: { x: j, y: 0.5 - i },
-              }),
-            );
-          if (j > 0)
-            joints.push(
-              world.createJoint({
-                type: 'revolute',
-                bodyA: nodes[5 * i + j - 1],
-                bodyB: b,
-                anchor: { x: j - 0.5, y: -i },
-              }),
-            );
+          const hinge = (other: Body, x: number, y: number) =>
+            joints.push(world.createJoint({ type: 'revolute', bodyA: other, bodyB: b, anchor: { x, y } }));
+          if (i > 0) hinge(nodes[5 * (i - 1) + j], pitch * j, pitch * (0.5 - i));
+          if (j > 0) hinge(nodes[5 * i + j - 1], pitch * (j - 0.5), -pitch * i);
         }
-      for (let s = 0; s < 30; s++) world.step(DT);
-      return { world, centre: nodes[12], joints };
+      return { world, nodes, centre: nodes[12], joints };
+    };
+    const net = () => {
+      const built = build(1, 2);
+      for (let s = 0; s < 30; s++) built.world.step(DT);
+      return built;
     };
     const settle = (world: World, joints: Joint[]) => {
       for (let s = 0; s < 120; s++) world.step(DT);
@@ -373,7 +366,7 @@ describe('joint structures', () => {
     };
     // turned by 0.3 rad about its centre: its four pins 2 x 0.5 sin(0.15) = 0.149 m out
     {
-      const { world, centre, joints } = build();
+      const { world, centre, joints } = net();
       expect(maxSeparation(joints)).toBeLessThan(1e-9);
       centre.setAngle(0.3);
       expect(maxSeparation(joints)).toBeCloseTo(Math.sin(0.15), 3);
@@ -381,7 +374,7 @@ describe('joint structures', () => {
     }
     // moved 0.2 m up
     {
-      const { world, centre, joints } = build();
+      const { world, centre, joints } = net();
       centre.setPosition({ x: 2, y: -1.8 });
       expect(maxSeparation(joints)).toBeGreaterThan(0.19);
       expect(settle(world, joints)).toBeLessThan(1e-4);
@@ -389,7 +382,7 @@ describe('joint structures', () => {
     // a second box 0.6 m to its right (the centre of mass moves 0.3 m, the pins stay on the body),
     // then spun at 20 rad/s: lever arms about the old centre would leave the joints 0.07 m apart
     {
-      const { world, centre, joints } = build();
+      const { world, centre, joints } = net();
       centre.createShape(Shape.box(0.2, 0.2, { x: 0.6, y: 0 }), { filter: { groupIndex: -1 } });
       centre.setAngularVelocity(20);
       for (let s = 0; s < 180; s++) world.step(DT);
@@ -399,40 +392,7 @@ describe('joint structures', () => {
     // the step, after the last relax (left with the anchors carried from before, they stayed 0.5 m
     // apart)
     {
-      const world = new World({ gravity: { x: 0, y: 0 }, enableSleep: false });
-      world.createBody({ position: { x: 8, y: 0 } }).createShape(Shape.box(0.1, 10));
-      const nodes: Body[] = [];
-      const joints: Joint[] = [];
-      for (let i = 0; i < 5; i++)
-        for (let j = 0; j < 5; j++) {
-          const b = world.createBody({
-            type: 'dynamic',
-            position: { x: 0.5 * j, y: -0.5 * i },
-            linearVelocity: { x: 120, y: 0 },
-            linearDamping: 3,
-            angularDamping: 3,
-          });
-          b.createShape(Shape.box(0.1, 0.1), { filter: { groupIndex: -1 } });
-          nodes.push(b);
-          if (i > 0)
-            joints.push(
-              world.createJoint({
-                type: 'revolute',
-                bodyA: nodes[5 * (i - 1) + j],
-                bodyB: b,
-                anchor: { x: 0.5 * j, y: 0.25 - 0.5 * i },
-              }),
-            );
-          if (j > 0)
-            joints.push(
-              world.createJoint({
-                type: 'revolute',
-                bodyA: nodes[5 * i + j - 1],
-                bodyB: b,
-                anchor: { x: 0.5 * j - 0.25, y: -0.5 * i },
-              }),
-            );
-        }
+      const { world, nodes, joints } = build(0.5, 3, 120, true);
       for (let s = 0; s < 120; s++) world.step(DT);
       expect(settle(world, joints)).toBeLessThan(1e-4);
       // nothing went through the wall
