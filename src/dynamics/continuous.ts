@@ -1,13 +1,13 @@
 import { NO_MOTION } from '../collision/broad-phase';
 import { IntList } from '../collision/int-list';
 import { packedBounds } from '../geometry/bounds';
-import { makeDistanceOutput, shapeDistance } from '../geometry/distance';
 import { minExtent } from '../geometry/extent';
 import { Pack } from '../geometry/packed';
+import { rayCastGeometry } from '../geometry/raycast';
 import { makeProxy, makeShapeProxy, type ShapeProxy } from '../geometry/shape-proxy';
 import { getSweepTransform, makeSweep } from '../geometry/sweep';
 import { makeTOIOutput, type TOIInput, timeOfImpact } from '../geometry/toi';
-import { type Geometry, ShapeKind } from '../geometry/types';
+import { type Geometry, type RayHit, ShapeKind } from '../geometry/types';
 import { makeBounds } from '../math/aabb';
 import { makeTransform } from '../math/vec2';
 import { BodyFlag } from './body-store';
@@ -29,9 +29,9 @@ const candidates = new IntList(64);
 const start = makeTransform();
 const bounds = makeBounds();
 const xf = makeTransform();
-/** the other body's transform and the disc's distance to it at the start, for discSinksIn */
+/** the other body's transform and the ray's hit, for discCentreRunsIn */
 const otherXf = makeTransform();
-const gap = makeDistanceOutput();
+const centreHit: RayHit = { fraction: 0, pointX: 0, pointY: 0, normalX: 0, normalY: 0 };
 const STATIC_TREE_MASK = 1;
 /** static, kinematic and dynamic trees */
 const ALL_TREES_MASK = 7;
@@ -162,11 +162,11 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
         input.proxyB = discProxy;
         timeOfImpact(input, output, slop);
         input.proxyB = shapeProxy;
-        if (output.state === 'hit' && output.fraction === 0 && discSinksIn(core, ob, slop)) {
-          // the core touches already, and the step would take it in or through: nothing but the
-          // solver's contact held a plank spinning against a thin wall, and it slipped through
-          // (the disc pinned in front of the wall, the plank through it a step later); it stays
-          // where it was this step, with its velocity, for the contact to stop
+        if (output.state === 'hit' && output.fraction === 0 && discCentreRunsIn(core, other, ob)) {
+          // the core touches already, and the step would take its centre in or through: nothing
+          // but the solver's contact held a plank spinning against a thin wall, and it slipped
+          // through (the disc pinned in front of the wall, the plank through it a step later); it
+          // stays where it was this step, with its velocity, for the contact to stop
           minFraction = 0;
           input.maxFraction = 0;
         }
@@ -193,23 +193,26 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
 }
 
 /**
- * Whether the disc of the body being swept (input.sweepB, see loadDisc), which touches body `other`'s
- * shape (input.proxyA) at the start of the step, moves towards it over the step (its centre by more
- * than a quarter of the slop along the normal between them), whether it stops in it or goes through.
+ * Whether the centre of the disc of the body being swept (input.sweepB, see loadDisc), which
+ * touches shape `other` of body `ob` at the start of the step, runs into that shape on its way to
+ * the end of the step (its straight path hits it): it goes in or through. Sliding or rolling along
+ * the shape, past a seam between two of them, does not (a test on the normal to the nearest feature
+ * froze thin bodies at seams, where that feature is a corner).
  */
-function discSinksIn(core: WorldCore, other: number, slop: number): boolean {
+function discCentreRunsIn(core: WorldCore, other: number, ob: number): boolean {
   const bodies = core.bodies;
-  otherXf.p.x = bodies.px[other];
-  otherXf.p.y = bodies.py[other];
-  otherXf.q.c = bodies.qc[other];
-  otherXf.q.s = bodies.qs[other];
-  shapeDistance(input.proxyA, otherXf, discProxy, start, true, gap);
+  otherXf.p.x = bodies.px[ob];
+  otherXf.p.y = bodies.py[ob];
+  otherXf.q.c = bodies.qc[ob];
+  otherXf.q.s = bodies.qs[ob];
   getSweepTransform(input.sweepB, 1, xf);
   const lx = discProxy.x[0];
   const ly = discProxy.y[0];
-  const dx = xf.p.x + xf.q.c * lx - xf.q.s * ly - (start.p.x + start.q.c * lx - start.q.s * ly);
-  const dy = xf.p.y + xf.q.s * lx + xf.q.c * ly - (start.p.y + start.q.s * lx + start.q.c * ly);
-  return dx * gap.normalX + dy * gap.normalY < -0.25 * slop;
+  const x0 = start.p.x + start.q.c * lx - start.q.s * ly;
+  const y0 = start.p.y + start.q.s * lx + start.q.c * ly;
+  const x1 = xf.p.x + xf.q.c * lx - xf.q.s * ly;
+  const y1 = xf.p.y + xf.q.s * lx + xf.q.c * ly;
+  return rayCastGeometry(core.shapes.geometry[other]!, otherXf, x0, y0, x1 - x0, y1 - y0, centreHit);
 }
 
 /** A one-point proxy at the shape's centroid with a quarter of its smallest half-thickness as radius. */
