@@ -51,3 +51,18 @@ export function pyramid(world: World, base: number): Body[] {
 export function dist(a: { x: number; y: number }, b: { x: number; y: number }): number {
   return Math.sqrt((a.x - b.x) ** 2 + (a.y - b.y) ** 2);
 }
+
+/** Linear momentum and angular momentum about (ox, oy) of `bodies`. */
+export function momentum(bodies: readonly Body[], ox = 0, oy = 0): { px: number; py: number; l: number } {
+  let px = 0;
+  let py = 0;
+  let l = 0;
+  for (const b of bodies) {
+    const v = b.linearVelocity;
+    const c = b.worldCenter;
+    px += b.mass * v.x;
+    py += b.mass * v.y;
+    l += b.inertia * b.angularVelocity + b.mass * ((c.x - ox) * v.y - (c.y - oy) * v.x);
+  }
+  return { px, py, l };
+}

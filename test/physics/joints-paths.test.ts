@@ -3,6 +3,7 @@ import { createRandom } from '../../scenes/random';
 import { H } from '../../src/dynamics/joints/hinge-batch';
 import { P } from '../../src/dynamics/joints/hinge-paths';
 import { type Body, type Joint, Shape, World } from '../../src/index';
+import { momentum } from '../helpers/world';
 
 // Chains and ropes of free hinges (no limit, motor or spring; each body on at most two) are solved
 // along their paths (HingePaths); other trees by the body-and-joint tree. These tests build paths the
@@ -182,19 +183,6 @@ describe('paths of free hinges', () => {
     };
     const paths = build(false);
     const tree = build(true);
-    const momentum = (links: Body[]) => {
-      let px = 0;
-      let py = 0;
-      let l = 0;
-      for (const b of links) {
-        const v = b.linearVelocity;
-        const c = b.worldCenter;
-        px += b.mass * v.x;
-        py += b.mass * v.y;
-        l += b.inertia * b.angularVelocity + b.mass * (c.x * v.y - c.y * v.x);
-      }
-      return { px, py, l };
-    };
     // the first step takes out the velocities that would pull the joints apart, by equal and
     // opposite impulses at each hinge
     const before = momentum(paths.links);

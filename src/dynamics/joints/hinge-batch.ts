@@ -241,12 +241,11 @@ export class HingeBatch {
       const joint = joints[i];
       joint.packHinge(ctx, this.data, this.ids, this.anchors, i);
       const k = joint.carriedSlot;
-      if (k >= 0) {
-        this.data.set(previousData.subarray(k * H.STRIDE, (k + 1) * H.STRIDE), i * H.STRIDE);
-        this.anchors.set(
-          previousAnchors.subarray(k * Anchor.STRIDE, (k + 1) * Anchor.STRIDE),
-          i * Anchor.STRIDE,
-        );
+      if (k < 0) continue;
+      // copied field by field: a subarray view per hinge is an allocation
+      for (let f = 0; f < H.STRIDE; f++) this.data[i * H.STRIDE + f] = previousData[k * H.STRIDE + f];
+      for (let f = 0; f < Anchor.STRIDE; f++) {
+        this.anchors[i * Anchor.STRIDE + f] = previousAnchors[k * Anchor.STRIDE + f];
       }
     }
     for (let i = 0; i < previousCount; i++) previous[i].carriedSlot = -1;
