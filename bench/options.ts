@@ -8,15 +8,22 @@ export interface BenchOptions {
   scenes: string[];
   /** scene to profile; null when not profiling */
   profile: string | null;
+  /** times every run is repeated, round after round, before the results are merged (merge-rounds.ts) */
+  rounds: number;
 }
 
-export const USAGE = `usage: npm run bench -- [--quick] [--engines a,b] [--scenes x,y] [--profile <scene>]
+const MAX_ROUNDS = 10;
+
+export const USAGE = `usage: npm run bench -- [--quick] [--engines a,b] [--scenes x,y] [--rounds n] [--profile <scene>]
   --quick             smaller scenes and fewer steps (under a minute for everything)
   --engines a,b       engines to run (${engines.map((e) => e.id).join(', ')})
   --scenes x,y        scenes to run (default: ${benchmarkScenes.join(', ')};
                       also: ${Object.keys(sceneBuilders)
                         .filter((s) => !benchmarkScenes.includes(s))
                         .join(', ')})
+  --rounds n          run everything n times over (1-${MAX_ROUNDS}, default 1), each run in a fresh process,
+                      and time by the median of all rounds' windows: a noisy machine's slow spells
+                      then fall on different runs each round
   --profile <scene>   CPU-profile Fulcrum (or --engines) on one scene and print the top functions by self time`;
 
 function list(value: string | undefined, flag: string, known: string[]): string[] {
@@ -34,6 +41,7 @@ export function parseOptions(argv: string[]): BenchOptions {
     engines: engines.map((e) => e.id),
     scenes: benchmarkScenes,
     profile: null,
+    rounds: 1,
   };
   let enginesGiven = false;
   for (let i = 0; i < argv.length; i++) {
@@ -50,6 +58,13 @@ export function parseOptions(argv: string[]): BenchOptions {
     else if (arg === '--profile') {
       options.profile = list(argv[++i], arg, Object.keys(sceneBuilders))[0];
       options.scenes = [options.profile];
+    } else if (arg === '--rounds') {
+      const value = argv[++i];
+      const rounds = Number(value);
+      if (!Number.isInteger(rounds) || rounds < 1 || rounds > MAX_ROUNDS) {
+        throw new Error(`--rounds: expected a whole number from 1 to ${MAX_ROUNDS}, got '${value}'`);
+      }
+      options.rounds = rounds;
     } else throw new Error(`unknown option '${arg}'`);
   }
   if (options.profile && !enginesGiven) options.engines = ['fulcrum'];

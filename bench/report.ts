@@ -30,11 +30,17 @@ function table(header: string[], rows: string[][]): string {
   return [line(header), widths.map((w) => '-'.repeat(w)).join('  '), ...rows.map(line)].join('\n');
 }
 
-export function formatReport(engines: EngineInfo[], scenes: string[], results: RunResult[]): string {
+export function formatReport(
+  engines: EngineInfo[],
+  scenes: string[],
+  results: RunResult[],
+  rounds = 1,
+): string {
   const find = (engine: string, scene: string) =>
     results.find((r) => r.engine === engine && r.scene === scene);
   const out: string[] = [];
-  out.push('ms per step (median of the timed windows; lower is better)');
+  const of = rounds > 1 ? ` of ${rounds} rounds, each run in a fresh process` : '';
+  out.push(`ms per step (median of the timed windows${of}; lower is better)`);
   out.push(
     table(
       ['scene', ...engines.map((e) => e.label)],
@@ -48,10 +54,15 @@ export function formatReport(engines: EngineInfo[], scenes: string[], results: R
       const f = find('fulcrum', scene);
       const p = find(peer, scene);
       if (!f?.msPerStep || !p?.msPerStep) return 'n/a';
-      return `${(p.msPerStep.median / f.msPerStep.median).toFixed(2)}x`;
+      const merged = `${(p.msPerStep.median / f.msPerStep.median).toFixed(2)}x`;
+      if (!f.roundMedians || !p.roundMedians) return merged;
+      // the ratio of each round's medians: how far one round alone could have put it
+      const each = p.roundMedians.map((ms, r) => ms / f.roundMedians![r]);
+      return `${merged} (${Math.min(...each).toFixed(2)}-${Math.max(...each).toFixed(2)})`;
     };
     out.push('');
     out.push("Fulcrum's speed ratio to each peer (peer ms / Fulcrum ms; above 1 means Fulcrum is faster)");
+    if (rounds > 1) out.push('(in brackets: the least and greatest ratio of one round alone)');
     out.push(
       table(
         ['scene', ...peers.map((e) => e.label)],

@@ -38,10 +38,23 @@ export interface RunResult {
   warmupSteps?: number;
   stepsPerWindow?: number;
   windows?: number;
+  /** ms per step of each timed window, in order (of every round, when merged: see merge-rounds.ts) */
+  windowMs?: number[];
   msPerStep?: Timing;
+  /** rounds merged into this result, and the median of each round's windows */
+  rounds?: number;
+  roundMedians?: number[];
   /** wall time of loading the engine, the free-fall check, the JIT warm-up and building the scene, ms */
   setupMs?: { load: number; freeFall: number; jitWarmup: number; build: number };
   quality?: Quality;
 }
 
 export const RESULT_PREFIX = 'RESULT ';
+
+/** median, least and greatest of window timings */
+export function summarize(samples: readonly number[]): Timing {
+  const sorted = [...samples].sort((a, b) => a - b);
+  const mid = sorted.length >> 1;
+  const median = sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
+  return { median, min: sorted[0], max: sorted[sorted.length - 1] };
+}

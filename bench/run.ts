@@ -7,6 +7,7 @@ import { cpus, platform, release } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { findEngine } from './engines';
+import { mergeRounds } from './merge-rounds';
 import { type BenchOptions, parseOptions, USAGE } from './options';
 import { topSelfTimes } from './profile';
 import { type RayCastBenchResult, rayCastBenchText, runRayCastBench } from './raycast';
@@ -35,31 +36,36 @@ function progress(text: string): void {
 }
 
 async function runAll(options: BenchOptions, engines: EngineInfo[]): Promise<RunResult[]> {
-  const results: RunResult[] = [];
+  const rounds: RunResult[][] = [];
   const unavailable = new Map<string, RunResult>();
-  const total = engines.length * options.scenes.length;
+  const total = options.rounds * engines.length * options.scenes.length;
   let done = 0;
   const started = performance.now();
-  for (const scene of options.scenes) {
-    for (const engine of engines) {
-      done++;
-      const skipped = unavailable.get(engine.id);
-      if (skipped) {
-        results.push({ ...skipped, scene });
-        continue;
+  for (let round = 1; round <= options.rounds; round++) {
+    const results: RunResult[] = [];
+    for (const scene of options.scenes) {
+      for (const engine of engines) {
+        done++;
+        const skipped = unavailable.get(engine.id);
+        if (skipped) {
+          results.push({ ...skipped, scene });
+          continue;
+        }
+        const elapsed = ((performance.now() - started) / 1000).toFixed(0);
+        const of = options.rounds > 1 ? ` round ${round}/${options.rounds}` : '';
+        progress(`[${done}/${total}] ${elapsed} s${of}  ${engine.label} on ${scene} ...`);
+        const result = await runWorker(engine.id, scene, {
+          quick: options.quick,
+          timeoutMs: options.quick ? 60_000 : 600_000,
+        });
+        if (result.stage === 'load' || result.stage === 'free-fall') unavailable.set(engine.id, result);
+        results.push(result);
       }
-      const elapsed = ((performance.now() - started) / 1000).toFixed(0);
-      progress(`[${done}/${total}] ${elapsed} s  ${engine.label} on ${scene} ...`);
-      const result = await runWorker(engine.id, scene, {
-        quick: options.quick,
-        timeoutMs: options.quick ? 60_000 : 600_000,
-      });
-      if (result.stage === 'load' || result.stage === 'free-fall') unavailable.set(engine.id, result);
-      results.push(result);
     }
+    rounds.push(results);
   }
   progress(`${total} runs in ${((performance.now() - started) / 1000).toFixed(0)} s\n`);
-  return results;
+  return mergeRounds(rounds);
 }
 
 async function profile(options: BenchOptions, engines: EngineInfo[]): Promise<void> {
@@ -118,7 +124,7 @@ async function main(): Promise<void> {
   }
   const results = await runAll(options, engines);
   console.log('');
-  console.log(formatReport(engines, options.scenes, results));
+  console.log(formatReport(engines, options.scenes, results, options.rounds));
   // Fulcrum-only query timing (issue 4), in this process: a few seconds
   let raycast: RayCastBenchResult | null = null;
   if (options.engines.includes('fulcrum')) {
@@ -138,7 +144,7 @@ async function main(): Promise<void> {
   const date = new Date().toISOString();
   writeFileSync(
     json,
-    `${JSON.stringify({ date, quick: options.quick, node: process.version, machine, engines, scenes: options.scenes, results, raycast }, null, 2)}\n`,
+    `${JSON.stringify({ date, quick: options.quick, rounds: options.rounds, node: process.version, machine, engines, scenes: options.scenes, results, raycast }, null, 2)}\n`,
   );
   const title = `Fulcrum vs peers, ms per step${options.quick ? ' (quick)' : ''}: ${machine.cpu}, Node ${process.version}, ${date.slice(0, 10)}`;
   writeFileSync(svg, svgChart(engines, options.scenes, results, title));

@@ -17,7 +17,7 @@ import {
   maxDisplacement,
   maxJointSeparation,
 } from './quality';
-import { RESULT_PREFIX, type RunResult, type Timing } from './result';
+import { RESULT_PREFIX, type RunResult, summarize } from './result';
 
 const DT = 1 / 60;
 /**
@@ -50,13 +50,6 @@ function checkFreeFall(adapter: EngineAdapter): number {
   adapter.readTransforms(t);
   adapter.dispose();
   return scene.bodies[0].position.y - t[1];
-}
-
-function summarize(samples: number[]): Timing {
-  const sorted = [...samples].sort((a, b) => a - b);
-  const mid = sorted.length >> 1;
-  const median = sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
-  return { median, min: sorted[0], max: sorted[sorted.length - 1] };
 }
 
 async function main(): Promise<void> {
@@ -149,6 +142,7 @@ async function main(): Promise<void> {
       warmupSteps: plan.warmup,
       stepsPerWindow: plan.window,
       windows: samples.length,
+      windowMs: samples,
       msPerStep: summarize(samples),
       setupMs: {
         load: clock.loaded - clock.start,

@@ -1,0 +1,55 @@
+/**
+ * Merges the results of several rounds of the same runs (`npm run bench -- --rounds N`). The machines
+ * this runs on are shared and noisy: one process's windows can all be 10-50 % slow while another
+ * engine's process ran in a quiet spell. Each round runs every engine on every scene once more, in
+ * the same order, so a slow spell falls on different runs each round; the merged timing is the
+ * median, least and greatest over the windows of all rounds. Quality figures take the worst round
+ * (the engines are deterministic: every round gives the same ones). A run that failed in any round
+ * is reported as that failure.
+ */
+import { type Quality, type RunResult, summarize } from './result';
+
+function worse(a: number | null, b: number | null): number | null {
+  return a === null || b === null ? null : Math.max(a, b);
+}
+
+function worstQuality(a: Quality, b: Quality): Quality {
+  return {
+    seconds: a.seconds,
+    settledAt: a.settledAt,
+    drift: Math.max(a.drift, b.drift),
+    jointSeparation: worse(a.jointSeparation, b.jointSeparation),
+    maxJointSeparation: worse(a.maxJointSeparation, b.maxJointSeparation),
+    escaped: worse(a.escaped, b.escaped),
+    finite: a.finite && b.finite,
+  };
+}
+
+/** `rounds[r][i]` is round r's result of run i (every round lists the same runs in the same order) */
+export function mergeRounds(rounds: readonly (readonly RunResult[])[]): RunResult[] {
+  if (rounds.length === 1) return [...rounds[0]];
+  return rounds[0].map((first, i) => {
+    const runs = rounds.map((round) => round[i]);
+    for (const run of runs) {
+      if (run.engine !== first.engine || run.scene !== first.scene) {
+        throw new Error(
+          `round results out of order: ${run.engine}/${run.scene} at ${first.engine}/${first.scene}`,
+        );
+      }
+    }
+    const failed = runs.find((run) => !run.ok || !run.windowMs || !run.quality);
+    if (failed) return failed;
+    const windowMs = runs.flatMap((run) => run.windowMs!);
+    let quality = first.quality!;
+    for (const run of runs) quality = worstQuality(quality, run.quality!);
+    return {
+      ...first,
+      windows: windowMs.length,
+      windowMs,
+      msPerStep: summarize(windowMs),
+      rounds: runs.length,
+      roundMedians: runs.map((run) => summarize(run.windowMs!).median),
+      quality,
+    };
+  });
+}
