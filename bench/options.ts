@@ -22,7 +22,7 @@ export const USAGE = `usage: npm run bench -- [--quick] [--engines a,b] [--scene
                         .filter((s) => !benchmarkScenes.includes(s))
                         .join(', ')})
   --rounds n          run everything n times over (1-${MAX_ROUNDS}, default 1), each run in a fresh process,
-                      and time by the median of all rounds' windows: a noisy machine's slow spells
+                      and time by the median of the rounds' medians: a noisy machine's slow spells
                       then fall on different runs each round
   --profile <scene>   CPU-profile Fulcrum (or --engines) on one scene and print the top functions by self time`;
 

@@ -19,7 +19,8 @@ export function qualityText(r: RunResult): string {
 
 function cell(r: RunResult | undefined): string {
   if (!r) return '-';
-  if (r.ok && r.msPerStep) return r.msPerStep.median.toFixed(2);
+  // three significant digits at least: the chain's 0.05-0.07 ms would all read 0.06 with two decimals
+  if (r.ok && r.msPerStep) return r.msPerStep.median.toFixed(r.msPerStep.median < 1 ? 3 : 2);
   return r.stage === 'load' || r.stage === 'free-fall' ? 'n/a' : 'error';
 }
 
@@ -39,8 +40,11 @@ export function formatReport(
   const find = (engine: string, scene: string) =>
     results.find((r) => r.engine === engine && r.scene === scene);
   const out: string[] = [];
-  const of = rounds > 1 ? ` of ${rounds} rounds, each run in a fresh process` : '';
-  out.push(`ms per step (median of the timed windows${of}; lower is better)`);
+  const what =
+    rounds > 1
+      ? `median of ${rounds} rounds' medians of the timed windows, each round in fresh processes`
+      : 'median of the timed windows';
+  out.push(`ms per step (${what}; lower is better)`);
   out.push(
     table(
       ['scene', ...engines.map((e) => e.label)],

@@ -146,7 +146,8 @@ async function main(): Promise<void> {
     json,
     `${JSON.stringify({ date, quick: options.quick, rounds: options.rounds, node: process.version, machine, engines, scenes: options.scenes, results, raycast }, null, 2)}\n`,
   );
-  const title = `Fulcrum vs peers, ms per step${options.quick ? ' (quick)' : ''}: ${machine.cpu}, Node ${process.version}, ${date.slice(0, 10)}`;
+  const of = `${options.quick ? ' (quick)' : ''}${options.rounds > 1 ? `, median of ${options.rounds} rounds` : ''}`;
+  const title = `Fulcrum vs peers, ms per step${of}: ${machine.cpu}, Node ${process.version}, ${date.slice(0, 10)}`;
   writeFileSync(svg, svgChart(engines, options.scenes, results, title));
   console.log(`\nwrote ${json}\nwrote ${svg}`);
   console.log(`machine: ${machine.cpu}, ${machine.cores} cores, ${machine.os}, Node ${process.version}`);
