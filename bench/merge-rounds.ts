@@ -6,9 +6,10 @@
  * median of the rounds' own medians: a process that ran slow throughout counts as one round of
  * several, where pooling its windows with the others' would shift the median by a third of them
  * (Fulcrum's chain: rounds 0.058, 0.051, 0.078 ms pooled to 0.065). Least and greatest are over
- * every window. Quality figures take the worst round
- * (the engines are deterministic: every round gives the same ones). A run that failed in any round
- * is reported as that failure.
+ * every window. Quality figures take the worst round, and the simulated time the shortest: the
+ * engines are deterministic, but a slow engine's run stops at the time budget after fewer windows,
+ * so its final figures can differ from round to round. A run that failed in any round is reported
+ * as that failure.
  */
 import { type Quality, type RunResult, summarize } from './result';
 
@@ -18,7 +19,7 @@ function worse(a: number | null, b: number | null): number | null {
 
 function worstQuality(a: Quality, b: Quality): Quality {
   return {
-    seconds: a.seconds,
+    seconds: Math.min(a.seconds, b.seconds),
     settledAt: a.settledAt,
     drift: Math.max(a.drift, b.drift),
     jointSeparation: worse(a.jointSeparation, b.jointSeparation),

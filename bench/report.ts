@@ -1,5 +1,5 @@
 /** Terminal tables of a benchmark run: speed, Fulcrum's ratio to each peer, and quality figures. */
-import type { RunResult } from './result';
+import { formatMs, type RunResult } from './result';
 
 export interface EngineInfo {
   id: string;
@@ -19,8 +19,7 @@ export function qualityText(r: RunResult): string {
 
 function cell(r: RunResult | undefined): string {
   if (!r) return '-';
-  // three significant digits at least: the chain's 0.05-0.07 ms would all read 0.06 with two decimals
-  if (r.ok && r.msPerStep) return r.msPerStep.median.toFixed(r.msPerStep.median < 1 ? 3 : 2);
+  if (r.ok && r.msPerStep) return formatMs(r.msPerStep.median);
   return r.stage === 'load' || r.stage === 'free-fall' ? 'n/a' : 'error';
 }
 

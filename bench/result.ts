@@ -51,6 +51,11 @@ export interface RunResult {
 
 export const RESULT_PREFIX = 'RESULT ';
 
+/** ms per step as printed: three significant digits at least (the chain's 0.05-0.07 ms would all read 0.06) */
+export function formatMs(ms: number): string {
+  return ms.toFixed(ms < 1 ? 3 : 2);
+}
+
 /** median, least and greatest of window timings */
 export function summarize(samples: readonly number[]): Timing {
   const sorted = [...samples].sort((a, b) => a - b);

@@ -1,6 +1,6 @@
 /** An SVG bar chart of ms per step: one group per scene, one bar per engine, scaled per scene. */
 import type { EngineInfo } from './report';
-import type { RunResult } from './result';
+import { formatMs, type RunResult } from './result';
 
 const COLORS = ['#e4572e', '#1f77b4', '#76b7e5', '#2ca02c', '#9467bd', '#8c564b', '#bcbd22', '#7f7f7f'];
 const BAR = 14;
@@ -40,7 +40,7 @@ export function svgChart(
           `<rect x="${LABEL_WIDTH}" y="${y}" width="${w.toFixed(1)}" height="${BAR}" fill="${color}"/>`,
         );
         parts.push(
-          `<text x="${(LABEL_WIDTH + w + 4).toFixed(1)}" y="${y + BAR - 3}" font-size="11">${ms.toFixed(2)} ms</text>`,
+          `<text x="${(LABEL_WIDTH + w + 4).toFixed(1)}" y="${y + BAR - 3}" font-size="11">${formatMs(ms)} ms</text>`,
         );
       } else {
         parts.push(`<text x="${LABEL_WIDTH + 4}" y="${y + BAR - 3}" font-size="11" fill="#888">n/a</text>`);
