@@ -48,6 +48,25 @@ export async function waitForSteps(page: Page, steps: number, timeout = 20_000):
 }
 
 /** A screenshot of the stage (the demo's canvas), decoded. */
+/**
+ * Starts the current demo again and pauses it before it takes a step (both in one task of the page, so
+ * no frame comes between), as the Reset and Pause buttons do.
+ */
+export async function restartPaused(page: Page): Promise<void> {
+  await page.evaluate(() => {
+    document.getElementById('btn-reset')?.click();
+    const g = (window as unknown as { gallery: { runner: { paused: boolean } } }).gallery;
+    if (!g.runner.paused) document.getElementById('btn-pause')?.click();
+  });
+}
+
+/** Takes `steps` steps by hand, as the Step button does (each step is drawn at once). */
+export async function stepByHand(page: Page, steps: number): Promise<void> {
+  await page.evaluate((n) => {
+    for (let i = 0; i < n; i++) document.getElementById('btn-step')?.click();
+  }, steps);
+}
+
 export async function shootStage(page: Page, path?: string): Promise<Image> {
   const png = await page.locator('#stage').screenshot({ path, animations: 'allow' });
   return decodePng(png);
