@@ -135,7 +135,7 @@ export class BroadPhase {
   /**
    * Takes the proxy's new tight box, entry `i` of `boxes`, and its expected displacement over the next
    * step, (motion[0], motion[1]) (NO_MOTION when unknown). The fat box is the tight box grown by the
-   * margin and stretched MOTION_AHEAD times the displacement ahead, so that a fast body leaves it and
+   * margin and stretched MotionAhead.FACTOR times the displacement ahead, so that a fast body leaves it and
    * looks for pairs every few steps rather than every step (a swinging 100-link chain: 62 to 25 proxies
    * a step; 500 tumbling boxes: 128 to 81). Returns false (and does nothing) while the stored fat box
    * holds the tight box and is nowhere more than the margin and the stretch larger than a new one
