@@ -11,9 +11,8 @@ import {
 } from '../geometry/manifold-polygon';
 import { Pack } from '../geometry/packed';
 import type { Manifold, ManifoldPoint } from '../geometry/types';
-import { BodyFlag, BodyKind } from './body-store';
+import { BodyFlag } from './body-store';
 import { ContactFlag, MC } from './contact-store';
-import { ShapeFlag, shouldShapesCollide } from './shape-store';
 import type { WorldCore } from './world-core';
 
 /** A manifold point of its own class, so that its fields stay unboxed doubles (see ScratchPoint). */
@@ -27,29 +26,19 @@ class Point implements ManifoldPoint {
 const manifold: Manifold = { normalX: 0, normalY: 0, pointCount: 0, points: [new Point(), new Point()] };
 
 /**
- * Creates contacts for the new overlapping pairs the broad phase found, in (shapeA, shapeB) order.
+ * Creates contacts for the new overlapping pairs the broad phase found and WorldCore.shouldPair
+ * allowed, in (shapeA, shapeB) order.
  * A world holds at most IndexBound.MAX contacts: pairs beyond that are left out, like filtered ones,
  * until their proxies move again.
  */
 export function createNewContacts(core: WorldCore): void {
   const pairs = core.newPairs;
   pairs.clear();
-  core.broadPhase.updatePairs(core.pairs, pairs);
-  const shapes = core.shapes;
-  const kind = core.bodies.kind;
+  core.broadPhase.updatePairs(core.pairs, core, pairs);
   const data = pairs.data;
   for (let i = 0, n = pairs.length; i < n; i += 2) {
-    const a = data[i];
-    const b = data[i + 1];
-    const bodyA = shapes.body[a];
-    const bodyB = shapes.body[b];
-    if (bodyA === bodyB) continue;
-    if (kind[bodyA] !== BodyKind.DYNAMIC && kind[bodyB] !== BodyKind.DYNAMIC) continue;
-    if ((shapes.flags[a] & shapes.flags[b] & ShapeFlag.SENSOR) !== 0) continue;
-    if (!shouldShapesCollide(shapes, a, b)) continue;
-    if (!core.jointsAllowCollision(bodyA, bodyB)) continue;
-    if (core.contacts.liveCount >= IndexBound.MAX) continue;
-    core.createContact(a, b);
+    if (core.contacts.liveCount >= IndexBound.MAX) break;
+    core.createContact(data[i], data[i + 1]);
   }
 }
 

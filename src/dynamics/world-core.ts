@@ -1,4 +1,4 @@
-import { BroadPhase, NO_MOTION, ProxyType } from '../collision/broad-phase';
+import { BroadPhase, NO_MOTION, type PairFilter, ProxyType } from '../collision/broad-phase';
 import { IntList } from '../collision/int-list';
 import { PairSet } from '../collision/pair-set';
 import { makeSettings, type Settings } from '../core/settings';
@@ -20,7 +20,7 @@ import { HingeBatch } from './joints/hinge-batch';
 import type { Joint } from './joints/joint';
 import type { JointContext } from './joints/joint-context';
 import { JointTree } from './joints/joint-tree';
-import { ShapeFlag, ShapeStore } from './shape-store';
+import { ShapeFlag, ShapeStore, shouldShapesCollide } from './shape-store';
 
 /**
  * Scratch transforms of the step, built from classes of their own: V8 keeps the fields of a class
@@ -48,7 +48,7 @@ const boundsScratch: Bounds = makeBounds();
  * The engine's state and the internal operations that keep it consistent (contacts linked to bodies,
  * proxies in step with shapes, islands). The public `World` validates input and calls into this.
  */
-export class WorldCore {
+export class WorldCore implements PairFilter {
   readonly settings: Settings;
   readonly bodies = new BodyStore();
   readonly shapes = new ShapeStore();
@@ -313,6 +313,21 @@ export class WorldCore {
   }
 
   /** False when a joint without collideConnected links the two bodies. */
+  /**
+   * Whether two shapes whose fat boxes overlap get a contact: on different bodies, one of them
+   * dynamic, not both sensors, their filters agree and no joint between their bodies forbids it.
+   */
+  shouldPair(a: number, b: number): boolean {
+    const shapes = this.shapes;
+    const bodyA = shapes.body[a];
+    const bodyB = shapes.body[b];
+    if (bodyA === bodyB) return false;
+    const kind = this.bodies.kind;
+    if (kind[bodyA] !== BodyKind.DYNAMIC && kind[bodyB] !== BodyKind.DYNAMIC) return false;
+    if ((shapes.flags[a] & shapes.flags[b] & ShapeFlag.SENSOR) !== 0) return false;
+    return shouldShapesCollide(shapes, a, b) && this.jointsAllowCollision(bodyA, bodyB);
+  }
+
   jointsAllowCollision(bodyA: number, bodyB: number): boolean {
     const ja = this.bodyJoints[bodyA];
     const jb = this.bodyJoints[bodyB];
