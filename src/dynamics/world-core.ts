@@ -312,7 +312,6 @@ export class WorldCore implements PairFilter {
     }
   }
 
-  /** False when a joint without collideConnected links the two bodies. */
   /**
    * Whether two shapes whose fat boxes overlap get a contact: on different bodies, one of them
    * dynamic, not both sensors, their filters agree and no joint between their bodies forbids it.
@@ -328,6 +327,7 @@ export class WorldCore implements PairFilter {
     return shouldShapesCollide(shapes, a, b) && this.jointsAllowCollision(bodyA, bodyB);
   }
 
+  /** False when a joint without collideConnected links the two bodies. */
   jointsAllowCollision(bodyA: number, bodyB: number): boolean {
     const ja = this.bodyJoints[bodyA];
     const jb = this.bodyJoints[bodyB];
