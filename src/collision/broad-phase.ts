@@ -48,12 +48,6 @@ export interface BoxColumns {
   readonly maxY: Float64Array;
 }
 
-/**
- * Broad phase: one dynamic tree per body type holding fat boxes (tight box + margin; static proxies
- * get no margin), and a move buffer of proxies whose pairs must be looked for at the next
- * `updatePairs`. Pair rules: dynamic proxies pair with every type; static and kinematic proxies pair
- * only with dynamic ones. Each tree proxy's user data is the shape id.
- */
 /** the box `query` hands to `queryBox`, and the fat box `moveProxy` hands to the tree */
 const queryScratch = new Float64Array(4);
 const moveScratch = new Float64Array(4);
@@ -70,6 +64,12 @@ enum MotionAhead {
   FACTOR = 2,
 }
 
+/**
+ * Broad phase: one dynamic tree per body type holding fat boxes (tight box + margin; static proxies
+ * get no margin), and a move buffer of proxies whose pairs must be looked for at the next
+ * `updatePairs`. Pair rules: dynamic proxies pair with every type; static and kinematic proxies pair
+ * only with dynamic ones. Each tree proxy's user data is the shape id.
+ */
 export class BroadPhase {
   private readonly trees: DynamicTree[] = [new DynamicTree(), new DynamicTree(), new DynamicTree()];
   /** Per tree: index of each proxy in `moveBuffer`, or -1. Sized to the tree's capacity. */
@@ -206,7 +206,7 @@ export class BroadPhase {
    * then empties the move buffer. A pair is a candidate when the fat boxes overlap, at least one proxy
    * is buffered, the types may pair, `existing` does not hold the pair of shape ids and `filter`
    * allows it. (Filtered here, before the sort: a chain's links find their jointed neighbours every
-   * time they look, 60 refused pairs a step in a swinging 100-link chain.)
+   * time they look, about 40 refused pairs a step, up to 100, in a swinging 100-link chain.)
    */
   updatePairs(existing: PairSet, filter: PairFilter, out: IntList): void {
     for (let type = 0; type < 3; type++) this.trees[type].settleMoves();
