@@ -139,10 +139,10 @@ export class HingePaths {
       this.stepPoseEpoch === ctx.poseEpoch &&
       (!this.laid || (this.sameLayout && this.count === this.previous.length));
     // the masses and centres change only with a body's mass, which lays the paths anew
-    if (carry) {
-      // nothing to read
-    } else if (this.laid) writeStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
-    else turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+    if (!carry) {
+      if (this.laid) writeStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+      else turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+    }
     this.startFactored = carry;
     this.carried = false;
     this.stepPoseEpoch = ctx.poseEpoch;
