@@ -18,6 +18,13 @@ export interface Settings {
   contactPushMaxSpeed: number;
   /** bodies slower than this (and turning slower, see island.ts) for timeToSleep fall asleep */
   sleepSpeed: number;
+  /**
+   * largest speed at which a joint's position correction moves its bodies (a rigid joint pulled
+   * together, a violated limit pushed back), as contactPushMaxSpeed bounds the contacts'
+   */
+  jointPushMaxSpeed: number;
+  /** most a tree joint's position error is corrected by in one substep (JointTree.stabilize) */
+  jointCorrectionMax: number;
   /** normal approach speed above which restitution is applied */
   restitutionThreshold: number;
   /** largest linear speed a body may reach */
@@ -29,6 +36,12 @@ export const CONTACT_DAMPING_RATIO = 10;
 export const JOINT_HERTZ = 60;
 export const JOINT_DAMPING_RATIO = 2;
 export const TIME_TO_SLEEP = 0.5;
+/** fastest turn (rad/s) at which a joint's position correction turns its bodies (see jointPushMaxSpeed) */
+export const JOINT_PUSH_MAX_TURN = 3;
+/** most a tree joint's angle error is corrected by in one substep (radians; see jointCorrectionMax) */
+export const JOINT_CORRECTION_MAX_TURN = 0.15;
+/** a tree joint's angle error left to its velocity bias (radians; the linear one is linearSlop) */
+export const JOINT_SLOP_TURN = (2 / 180) * Math.PI;
 /** largest rotation of a body in one substep, radians; keeps the (cos, sin) integration accurate */
 export const MAX_ROTATION_PER_SUBSTEP = 0.25 * Math.PI;
 
@@ -41,6 +54,8 @@ export function makeSettings(lengthUnitsPerMeter: number): Settings {
     manifoldTolerance: linearSlop / 500,
     aabbMargin: 0.1 * u,
     contactPushMaxSpeed: 3 * u,
+    jointPushMaxSpeed: 3 * u,
+    jointCorrectionMax: 0.2 * u,
     sleepSpeed: 0.05 * u,
     restitutionThreshold: 1 * u,
     maxLinearSpeed: 400 * u,

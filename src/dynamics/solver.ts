@@ -87,6 +87,9 @@ function prepareJoints(core: WorldCore, h: number): void {
   ctx.invH = 1 / h;
   ctx.warmSpeedLimit = 2 * core.settings.maxLinearSpeed;
   ctx.warmTurnLimit = (2 * MAX_ROTATION_PER_SUBSTEP) / h;
+  ctx.jointPushMaxSpeed = core.settings.jointPushMaxSpeed;
+  ctx.jointCorrectionMax = core.settings.jointCorrectionMax;
+  ctx.jointSlop = core.settings.linearSlop;
   const active = core.activeJoints;
   // listed anew only when a joint was made or destroyed or a body slept or woke (a pass over every
   // joint and a comparison of the lists in the tree's build: 3 % of a 40 x 40 hinge grid's step)
@@ -200,25 +203,21 @@ export function solve(core: WorldCore, dt: number): void {
     // positions change only in integratePositions: the last substep's relax factorization still holds
     if (i === 0) tree.factor(ctx, true, false);
     tree.project(state, treeBias, true);
-    hinges.solve(state, jointSoft);
-    for (let j = 0; j < iterativeCount; j++) {
-      iterative[j].solve(ctx, true);
-      // a row weighed with the tree's mass moved only its own two bodies: the tree carries it on
-      if (iterative[j].treeAxialMass > 0) tree.project(state, treeBias, false);
-    }
+    hinges.solve(state, jointSoft, ctx.jointPushMaxSpeed);
+    tree.solveAxials(ctx, true);
+    for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, true);
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, treeBias, false);
     integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed, i === subSteps - 1);
     tree.factor(ctx, false, i === subSteps - 1);
+    tree.stabilizeSubstep(ctx, settings.maxLinearSpeed * h, MAX_ROTATION_PER_SUBSTEP);
     // The projection is affine, v -> P v + c, with P a projector: when nothing else acts on the tree's
     // bodies before the next substep projects again (with the same factorization; gravity and damping
     // only add and scale), P (P v + g) = P (v + g), and this projection would change nothing then.
     if (coupled || i === subSteps - 1) tree.project(state, 0, false);
     hinges.relax(state, i === subSteps - 1);
-    for (let j = 0; j < iterativeCount; j++) {
-      iterative[j].solve(ctx, false);
-      if (iterative[j].treeAxialMass > 0) tree.project(state, 0, false);
-    }
+    tree.solveAxials(ctx, false);
+    for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, false);
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, 0, false);
   }
@@ -300,6 +299,7 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
   const sleepSpeed = core.settings.sleepSpeed;
   const enableSleep = core.enableSleep;
   const continuous = core.enableContinuous;
+  const invDt = 1 / dt;
   // the relax pass after the last position update is not bounded by the substeps' clamps
   clampAwakeVelocities(
     bodies,
@@ -343,8 +343,10 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     const inv = 0.5 * (3 - (qc * qc + qs * qs));
     qc *= inv;
     qs *= inv;
-    const cx = colCx[b] + state[s + S.DPX];
-    const cy = colCy[b] + state[s + S.DPY];
+    const dpx = state[s + S.DPX];
+    const dpy = state[s + S.DPY];
+    const cx = colCx[b] + dpx;
+    const cy = colCy[b] + dpy;
     const lx = colLcx[b];
     const ly = colLcy[b];
     colQc[b] = qc;
@@ -353,8 +355,8 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     colCy[b] = cy;
     colPx[b] = cx - (qc * lx - qs * ly);
     colPy[b] = cy - (qs * lx + qc * ly);
-    const c0x = cx - state[s + S.DPX];
-    const c0y = cy - state[s + S.DPY];
+    const c0x = cx - dpx;
+    const c0y = cy - dpy;
     state[s + S.DPX] = 0;
     state[s + S.DPY] = 0;
     state[s + S.DQC] = 1;
@@ -368,7 +370,10 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     const w = state[s + S.W];
     if (enableSleep && (colFlags[b] & BodyFlag.ALLOW_SLEEP) !== 0) {
       const speed = Math.sqrt(vx * vx + vy * vy) + colMaxExtent[b] * Math.abs(w);
-      colSleepTime[b] = speed > sleepSpeed ? 0 : colSleepTime[b] + dt;
+      // and how fast it moved: a body pushed out of an overlap or back inside a joint limit ends each
+      // substep at rest (the relax pass takes back the push's velocity) while it still moves
+      const moved = (Math.sqrt(dpx * dpx + dpy * dpy) + colMaxExtent[b] * Math.abs(dqs)) * invDt;
+      colSleepTime[b] = speed > sleepSpeed || moved > sleepSpeed ? 0 : colSleepTime[b] + dt;
     } else {
       colSleepTime[b] = 0;
     }

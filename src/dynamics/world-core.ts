@@ -1,7 +1,13 @@
 import { BroadPhase, NO_MOTION, type PairFilter, ProxyType } from '../collision/broad-phase';
 import { IntList } from '../collision/int-list';
 import { PairSet } from '../collision/pair-set';
-import { makeSettings, type Settings } from '../core/settings';
+import {
+  JOINT_CORRECTION_MAX_TURN,
+  JOINT_PUSH_MAX_TURN,
+  JOINT_SLOP_TURN,
+  makeSettings,
+  type Settings,
+} from '../core/settings';
 import { packedBounds } from '../geometry/bounds';
 import { maxExtentFrom, minExtent } from '../geometry/extent';
 import { computeMass } from '../geometry/mass';
@@ -114,6 +120,12 @@ export class WorldCore implements PairFilter {
     invH: 0,
     warmSpeedLimit: 0,
     warmTurnLimit: 0,
+    jointPushMaxSpeed: 0,
+    jointPushMaxTurn: JOINT_PUSH_MAX_TURN,
+    jointCorrectionMax: 0,
+    jointCorrectionMaxTurn: JOINT_CORRECTION_MAX_TURN,
+    jointSlop: 0,
+    jointSlopTurn: JOINT_SLOP_TURN,
     jointSoftness: { biasRate: 0, massScale: 1, impulseScale: 0 },
     tree: this.jointTree,
     poseEpoch: 0,

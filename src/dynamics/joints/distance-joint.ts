@@ -2,7 +2,7 @@ import { checkBoolean, checkNonNegative, FulcrumError } from '../../core/errors'
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
-import { makeSoftness, type Softness } from '../softness';
+import { makeSoftness, type Softness, springImpulse } from '../softness';
 import type { World } from '../world';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
@@ -117,12 +117,14 @@ export class DistanceJoint extends Joint {
 
   /** @internal */
   override treeFill(
-    state: Float64Array,
+    ctx: JointContext,
     jA: Float64Array,
     jB: Float64Array,
     err: Float64Array,
     j: number,
-  ): void {
+    _limits: boolean,
+  ): number {
+    const state = ctx.state;
     this.updateAnchors(state);
     const length = Math.sqrt(this.sepX * this.sepX + this.sepY * this.sepY);
     // at zero length the axis keeps its last direction
@@ -141,6 +143,7 @@ export class DistanceJoint extends Joint {
     jB[m + 2] = this.rBx * uy - this.rBy * ux;
     err[3 * j] = length - this.o.length;
     this.clearTreeRows(jA, jB, err, j, 1);
+    return 1;
   }
 
   /** @internal */
@@ -236,9 +239,16 @@ export class DistanceJoint extends Joint {
     if (o.enableSpring && o.minLength < o.maxLength) {
       if (o.hertz > 0) {
         const C = length - o.length;
-        const impulse =
-          -this.spring.massScale * axialMass * (this.axialSpeed(state) + this.spring.biasRate * C) -
-          this.spring.impulseScale * this.impulse;
+        const impulse = springImpulse(
+          this.spring,
+          o.hertz,
+          ctx.h,
+          this.mA + this.mB,
+          k,
+          this.axialSpeed(state),
+          C,
+          this.impulse,
+        );
         this.impulse += impulse;
         this.apply(state, impulse);
       }
@@ -249,7 +259,7 @@ export class DistanceJoint extends Joint {
         let impulseScale = 0;
         if (C > 0) bias = C * ctx.invH;
         else if (useBias) {
-          bias = soft.biasRate * C;
+          bias = Math.max(soft.biasRate * C, -ctx.jointPushMaxSpeed);
           massScale = soft.massScale;
           impulseScale = soft.impulseScale;
         }
@@ -268,7 +278,7 @@ export class DistanceJoint extends Joint {
         let impulseScale = 0;
         if (C > 0) bias = C * ctx.invH;
         else if (useBias) {
-          bias = soft.biasRate * C;
+          bias = Math.max(soft.biasRate * C, -ctx.jointPushMaxSpeed);
           massScale = soft.massScale;
           impulseScale = soft.impulseScale;
         }
@@ -287,7 +297,8 @@ export class DistanceJoint extends Joint {
       let massScale = 1;
       let impulseScale = 0;
       if (useBias) {
-        bias = soft.biasRate * C;
+        // bounded, as a contact's push is (see the revolute joint's point rows)
+        bias = Math.max(-ctx.jointPushMaxSpeed, Math.min(soft.biasRate * C, ctx.jointPushMaxSpeed));
         massScale = soft.massScale;
         impulseScale = soft.impulseScale;
       }

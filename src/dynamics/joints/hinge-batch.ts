@@ -344,7 +344,7 @@ export class HingeBatch {
    * One soft Gauss-Seidel pass over the hinges' point rows, with the anchors and mass the warm start
    * found (the bodies have not turned since).
    */
-  solve(state: Float64Array, soft: Softness): void {
+  solve(state: Float64Array, soft: Softness, pushLimit: number): void {
     if (this.count === 0) return; // as in warmStart
     const d = this.data;
     const ids = this.ids;
@@ -365,18 +365,11 @@ export class HingeBatch {
       const vBx = state[sb + S.VX];
       const vBy = state[sb + S.VY];
       const wB = state[sb + S.W];
-      const bx =
-        vBx -
-        wB * rBy -
-        vAx +
-        wA * rAy +
-        biasRate * (state[sb + S.DPX] - state[sa + S.DPX] + d[base + H.DCX] + rBx - rAx);
-      const by =
-        vBy +
-        wB * rBx -
-        vAy -
-        wA * rAx +
-        biasRate * (state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy);
+      // the pull bounded, as in the other joints (see JointTree's pushLimit)
+      const pullX = biasRate * (state[sb + S.DPX] - state[sa + S.DPX] + d[base + H.DCX] + rBx - rAx);
+      const pullY = biasRate * (state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy);
+      const bx = vBx - wB * rBy - vAx + wA * rAy + Math.max(-pushLimit, Math.min(pullX, pushLimit));
+      const by = vBy + wB * rBx - vAy - wA * rAx + Math.max(-pushLimit, Math.min(pullY, pushLimit));
       const lx = d[base + H.LX];
       const ly = d[base + H.LY];
       const m12 = d[base + H.M12];

@@ -54,6 +54,8 @@ export class HingePaths {
   /** the hinges, path after path, each path from one end to the other */
   readonly joints: Joint[] = [];
   count = 0;
+  /** the fastest the hinges' position correction may pull (see JointTree's pushLimit) */
+  pushLimit = 0;
   private data = new Float64Array(0);
   /** per hinge: the slots of the bodies before and after it on the path */
   private ids = new Int32Array(0);
@@ -247,6 +249,7 @@ export class HingePaths {
    */
   project(state: Float64Array, biasRate: number, first: boolean): void {
     const d = this.data;
+    const limit = this.pushLimit;
     const ids = this.ids;
     const n = this.count & IndexBound.MAX;
     // forward: y_k = -(J v + bias)_k - L_k y_k-1
@@ -263,13 +266,13 @@ export class HingePaths {
         wA * d[base + H.RAY] -
         state[sb + S.VX] +
         wB * d[base + H.RBY] -
-        biasRate * d[base + P.EX];
+        Math.max(-limit, Math.min(biasRate * d[base + P.EX], limit));
       const ry =
         state[sa + S.VY] +
         wA * d[base + H.RAX] -
         state[sb + S.VY] -
         wB * d[base + H.RBX] -
-        biasRate * d[base + P.EY];
+        Math.max(-limit, Math.min(biasRate * d[base + P.EY], limit));
       const nx = rx - (d[base + P.L11] * yx + d[base + P.L12] * yy);
       yy = ry - (d[base + P.L21] * yx + d[base + P.L22] * yy);
       yx = nx;

@@ -19,6 +19,18 @@ export interface JointContext {
   /** speeds no warm start may throw a body past (linear, angular): twice the step's limits */
   warmSpeedLimit: number;
   warmTurnLimit: number;
+  /**
+   * the fastest a joint's position correction moves its bodies (a rigid joint pulled back together,
+   * a violated limit pushed back), as the contacts' push is bounded: along a row (m/s), in angle (rad/s)
+   */
+  jointPushMaxSpeed: number;
+  jointPushMaxTurn: number;
+  /** the most a tree joint's position error is corrected by in one substep (JointTree.stabilize) */
+  jointCorrectionMax: number;
+  jointCorrectionMaxTurn: number;
+  /** the position error of a tree joint left to its velocity bias (JointTree.stabilize) */
+  jointSlop: number;
+  jointSlopTurn: number;
   /** softness of rigid joints' position correction */
   jointSoftness: Softness;
   /** the exact solver of tree-shaped joints (closures apply their impulses through it) */

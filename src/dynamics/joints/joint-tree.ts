@@ -3,6 +3,7 @@ import { BodyKind, S } from '../body-store';
 import { HingePaths } from './hinge-paths';
 import type { Joint } from './joint';
 import type { JointContext } from './joint-context';
+import { TreeAxials, type TreeSolve } from './tree-axials';
 
 /*
  * Direct solver for the rigid rows of joints that form a forest (chains, bridges, welded beams,
@@ -49,8 +50,8 @@ const MAX_LOOPS = 8;
  */
 export const CLOSURE_REGULARIZATION = 0.05;
 
-/** tree joints whose limit or motor row gets its effective mass through the tree (one solve each) */
-const MAX_AXIALS = 16;
+/** a position correction turning a body further than this (radians) is followed by a second one */
+const RESTABILIZE_TURN = 0.1;
 
 /** rows and columns of a node block: a body's 3 plus up to 3 rows of a grounded joint */
 enum Block {
@@ -62,7 +63,7 @@ enum NodeKind {
   BODY = 0,
 }
 
-export class JointTree {
+export class JointTree implements TreeSolve {
   /** the joints solved here this step by the body-and-joint tree, in creation order */
   readonly joints: Joint[] = [];
   jointCount = 0;
@@ -84,6 +85,23 @@ export class JointTree {
   private jB = new Float64Array(16 * 9);
   private err = new Float64Array(16 * 3);
   /**
+   * per tree row: the fastest its position correction may pull (JointContext.jointPushMaxSpeed, or
+   * jointPushMaxTurn for a row of angles alone). Unbounded, a light body spinning near the rotation
+   * limit at the end of a long lever, whose anchor leaves its row by the arc it turns in a substep,
+   * was pulled back at hundreds of m/s, and the forest it hung in gained energy without bound.
+   */
+  private pushLimit = new Float64Array(16 * 3);
+  /**
+   * per tree row: the most its position error is corrected by in one substep (see stabilize): a
+   * limit's at the push limits, the others' at JointContext.jointCorrectionMax / MaxTurn
+   */
+  private correctionLimit = new Float64Array(16 * 3);
+  /** per tree row: the error stabilize leaves to the velocity bias (see there); 0 for a limit's */
+  private correctionSlop = new Float64Array(16 * 3);
+  /** per tree row: 1 for a limit's row (Joint.fillLimitRow) */
+  private limitRow = new Uint8Array(16 * 3);
+
+  /**
    * Hinges and rods that would close a loop (a bridge pinned at both ends, a weight hung from two
    * rods) stay iterative, but are solved through the tree: with the effective mass K = J P M⁻¹ Jᵀ
    * (P the projection onto the tree rows) and with their impulse applied as the tree's response to
@@ -100,17 +118,8 @@ export class JointTree {
   readonly closureImpulse = new Float64Array(2);
   /** per closure row: the velocity change of every body node for a unit impulse on that row */
   private response = new Float64Array(0);
-  /**
-   * Tree hinges with a limit or a motor: their angular row is solved iteratively, after the tree's
-   * projection, so it needs the angular mass the tree gives it (an arm on a pin turns about the pin,
-   * not about its centre of mass).
-   */
-  readonly axials: Joint[] = [];
-  /** an axial row's Jacobian blocks at A and B (see Joint.axialJacobian) */
-  private readonly axialJA = new Float64Array(3);
-  private readonly axialJB = new Float64Array(3);
-  private axialNodeA = new Int32Array(MAX_AXIALS);
-  private axialNodeB = new Int32Array(MAX_AXIALS);
+  /** the axial rows of tree joints (limits, motors, springs), solved together through the tree */
+  readonly axials = new TreeAxials();
   /** per tree joint: the node holding its rows, the first of them there, and its bodies' nodes */
   private rowNode = new Int32Array(16);
   private rowOffset = new Int32Array(16);
@@ -128,10 +137,17 @@ export class JointTree {
   private dInv = new Float64Array(32 * Block.SIZE);
   private l = new Float64Array(32 * 9);
   private x = new Float64Array(32 * Block.ROWS);
+  /** @internal the solution vector of substitute (TreeSolve) */
+  get solution(): Float64Array {
+    return this.x;
+  }
+  /** @internal */
+  readonly rowsPerNode = Block.ROWS;
   /** scratch of buildNodes: the breadth-first order, then each old node's new index */
   private order = new Int32Array(32);
   private rank = new Int32Array(32);
-  private nodeCount = 0;
+  /** @internal */
+  nodeCount = 0;
 
   /** per active joint (build's input): its bodies' slots and whether the tree could take it */
   private activeA = new Int32Array(16);
@@ -203,7 +219,6 @@ export class JointTree {
     this.nodeCount = 0;
     this.joints.length = 0;
     this.closures.length = 0;
-    this.axials.length = 0;
     // the ground's entry: a non-dynamic body of the active joints
     let ground = -1;
     for (let j = 0; j < active.length && ground === -1; j++) {
@@ -222,7 +237,8 @@ export class JointTree {
       joint.inTree = false;
       joint.onPath = false;
       joint.closure = false;
-      joint.treeAxialMass = 0;
+      joint.axialEntry0 = -1;
+      joint.axialEntry1 = -1;
       const a = joint.bodyA.slot;
       const b = joint.bodyB.slot;
       this.activeA[j] = a;
@@ -254,20 +270,19 @@ export class JointTree {
       this.root[ra] = rb;
       joint.inTree = true;
       this.joints.push(joint);
-      if (joint.hasAxialRow() && this.axials.length < MAX_AXIALS) this.axials.push(joint);
     }
     this.splitPaths(kind);
     this.jointCount = this.joints.length;
     this.iterative.length = 0;
     for (let j = 0; j < active.length; j++) {
       const joint = active[j];
+      // a tree joint keeps the limit it holds through a rebuild (the same choice whether or not the
+      // tree was rebuilt); others hold none
+      if (!joint.inTree) joint.treeLimit = 0;
       if (!joint.inTree || joint.iteratesInTree()) this.iterative.push(joint);
     }
     this.buildNodes(kind);
-    for (let i = 0; i < this.axials.length; i++) {
-      this.axialNodeA[i] = this.bodyNode[this.axials[i].bodyA.slot];
-      this.axialNodeB[i] = this.bodyNode[this.axials[i].bodyB.slot];
-    }
+    this.axials.list(this.joints, this.jointCount, this.nodeCount, this.bodyNode);
     if (this.nodeCount > MAX_CLOSURE_NODES) {
       for (let c = 0; c < this.closures.length; c++) this.closures[c].closure = false;
       this.closures.length = 0;
@@ -457,6 +472,10 @@ export class JointTree {
       this.jA = growF64(this.jA, cap * 9);
       this.jB = growF64(this.jB, cap * 9);
       this.err = growF64(this.err, cap * 3);
+      this.pushLimit = growF64(this.pushLimit, cap * 3);
+      this.correctionLimit = growF64(this.correctionLimit, cap * 3);
+      this.correctionSlop = growF64(this.correctionSlop, cap * 3);
+      this.limitRow = growU8(this.limitRow, cap * 3);
     }
     const n = 3 * count + 1;
     if (this.nodeKind.length >= n) return;
@@ -637,37 +656,21 @@ export class JointTree {
    * have it from the step before); `last`: the step's last.
    */
   factor(ctx: JointContext, first: boolean, last: boolean): void {
+    this.paths.pushLimit = ctx.jointPushMaxSpeed;
     if (this.paths.count > 0 && !(first && this.paths.factoredAtStart)) this.paths.factor(ctx.state, last);
-    this.factorTree(ctx);
-    if (this.closures.length > 0) this.closureMasses(ctx);
-    if (this.axials.length > 0) this.axialMasses(ctx.state);
+    this.factorBodyTree(ctx);
   }
 
-  /**
-   * The effective mass of each axial row through the tree: the row's velocity response to a unit
-   * impulse on it (J P M⁻¹ Jᵀ), inverted.
-   */
-  private axialMasses(state: Float64Array): void {
-    const x = this.x;
-    const jA = this.axialJA;
-    const jB = this.axialJB;
-    for (let i = 0; i < this.axials.length; i++) {
-      const nodeA = this.axialNodeA[i];
-      const nodeB = this.axialNodeB[i];
-      this.axials[i].axialJacobian(state, jA, jB);
-      x.fill(0, 0, Block.ROWS * this.nodeCount);
-      for (let c = 0; c < 3; c++) {
-        if (nodeA !== -1) x[Block.ROWS * nodeA + c] = jA[c];
-        if (nodeB !== -1) x[Block.ROWS * nodeB + c] = jB[c];
-      }
-      this.substitute();
-      let k = 0;
-      for (let c = 0; c < 3; c++) {
-        if (nodeA !== -1) k += jA[c] * x[Block.ROWS * nodeA + c];
-        if (nodeB !== -1) k += jB[c] * x[Block.ROWS * nodeB + c];
-      }
-      this.axials[i].treeAxialMass = k > 0 ? 1 / k : 0;
-    }
+  /** Factors the body-and-joint tree (not the paths) with its closures' and axial rows' masses. */
+  private factorBodyTree(ctx: JointContext): void {
+    this.factorTree(ctx);
+    if (this.closures.length > 0) this.closureMasses(ctx);
+    if (this.axials.count > 0) this.axials.factor(ctx, this);
+  }
+
+  /** One pass over the axial rows of the tree's joints (see TreeAxials). */
+  solveAxials(ctx: JointContext, useBias: boolean): void {
+    if (this.axials.count > 0) this.axials.solve(ctx, this, useBias);
   }
 
   /**
@@ -679,10 +682,18 @@ export class JointTree {
   private factorTree(ctx: JointContext): void {
     const count = this.jointCount;
     if (count === 0) return;
-    const state = ctx.state;
     const jA = this.jA;
     const jB = this.jB;
-    for (let j = 0; j < count; j++) this.joints[j].treeFill(state, jA, jB, this.err, j);
+    this.limitRow.fill(0, 0, 3 * count);
+    for (let j = 0; j < count; j++) {
+      const rows = this.joints[j].treeFill(ctx, jA, jB, this.err, j, true);
+      // a limit the tree holds this substep is one more row (Joint.fillLimitRow)
+      if (rows !== this.rows[j]) {
+        this.rows[j] = rows;
+        this.nodeDim[this.rowNode[j]] = this.rowOffset[j] + rows;
+      }
+    }
+    this.fillPushLimits(ctx, count);
     this.fillPivots(ctx.invMass, ctx.invInertia);
     const nodes = this.nodeCount;
     const parent = this.parent;
@@ -760,11 +771,138 @@ export class JointTree {
   }
 
   /**
+   * Sets each tree row's push limit (a turn rate for a row of angles alone, else a speed) and its
+   * correction limit per substep. A limit's row has no position bias in the projections: stabilize
+   * pushes it back, by positions alone (see there).
+   */
+  private fillPushLimits(ctx: JointContext, count: number): void {
+    const jA = this.jA;
+    const jB = this.jB;
+    const push = this.pushLimit;
+    const correction = this.correctionLimit;
+    const slop = this.correctionSlop;
+    const h = ctx.h;
+    for (let r = 0; r < 3 * count; r++) {
+      const m = 3 * r;
+      const angular = jA[m] === 0 && jA[m + 1] === 0 && jB[m] === 0 && jB[m + 1] === 0;
+      const speed = angular ? ctx.jointPushMaxTurn : ctx.jointPushMaxSpeed;
+      if (this.limitRow[r] !== 0) {
+        push[r] = 0;
+        correction[r] = speed * h;
+        slop[r] = 0;
+      } else {
+        push[r] = speed;
+        correction[r] = angular ? ctx.jointCorrectionMaxTurn : ctx.jointCorrectionMax;
+        slop[r] = angular ? ctx.jointSlopTurn : ctx.jointSlop;
+      }
+    }
+  }
+
+  /**
+   * @internal while set, the joints keep the limits they hold (Joint.fillLimitRow): a second
+   * factorization within a substep (see restabilize) must hold the same rows as the first
+   */
+  keepLimits = false;
+
+  /** @internal Marks row `row` of tree joint `j` as a limit's (Joint.fillLimitRow). */
+  markLimitRow(j: number, row: number): void {
+    this.limitRow[3 * j + row] = 1;
+  }
+
+  /**
+   * Moves the tree's bodies so that its rows' position errors come back within their slop, each by at
+   * most its correction limit (a violated limit's by its push per substep): Δx = -M⁻¹ Jᵀ (J M⁻¹ Jᵀ)⁻¹ C,
+   * the smallest move in the bodies' masses, with the current factorization (post-stabilization,
+   * after Cline and Pai). It moves positions and no velocity, so it adds no energy, unlike the
+   * velocity bias: the joints of a spinning body drift apart by the arc its anchors turn within a
+   * substep ((ω h)² r / 2), and a 40-link chain uncurling a radian at each limit (its tip turning
+   * 40 rad/s) drifted apart by metres though each substep's bias pulled back. Within the slop, the
+   * velocity bias still corrects: the moved positions keep velocities tangent to where the bodies
+   * were, and a pendulum's rod held by positions alone lost 4 % of its energy a second, where the
+   * bias's inward velocity turns the velocity with the rod (to second order in ω h, exactly).
+   * Called after the substep's positions were integrated and the tree factored at them; the errors
+   * are then taken as corrected for the next projections. Returns the largest turn it gave a body,
+   * or -1 when it moved none.
+   */
+  stabilize(state: Float64Array, limits: boolean, maxMove: number, maxTurn: number): number {
+    const count = this.jointCount;
+    if (count === 0) return 0;
+    const x = this.x;
+    x.fill(0, 0, Block.ROWS * this.nodeCount);
+    const err = this.err;
+    const correction = this.correctionLimit;
+    const slop = this.correctionSlop;
+    let any = false;
+    for (let j = 0; j < count; j++) {
+      const o = Block.ROWS * this.rowNode[j] + this.rowOffset[j];
+      for (let r = 0; r < 3; r++) {
+        const e = 3 * j + r;
+        const beyond = err[e] - Math.max(-slop[e], Math.min(err[e], slop[e]));
+        const c = Math.max(-correction[e], Math.min(beyond, correction[e]));
+        if (c === 0 || (!limits && this.limitRow[e] !== 0)) continue;
+        x[o + r] = -c;
+        err[e] -= c;
+        any = true;
+      }
+    }
+    if (!any) return -1;
+    this.substitute();
+    // no body further than the speed limits let it move in a substep: near a singular pose the
+    // smallest move to a small error can be a large one, and the linear step is meaningless there
+    let moved = 0;
+    let turned = 0;
+    for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
+      if (this.nodeKind[n] !== NodeKind.BODY) continue;
+      const o = Block.ROWS * n;
+      moved = Math.max(moved, Math.abs(x[o]), Math.abs(x[o + 1]));
+      turned = Math.max(turned, Math.abs(x[o + 2]));
+    }
+    const scale = Math.min(1, maxMove / moved, maxTurn / turned);
+    for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
+      if (this.nodeKind[n] !== NodeKind.BODY) continue;
+      const o = Block.ROWS * n;
+      const s = this.nodeBody[n] * S.STRIDE;
+      state[s + S.DPX] += scale * x[o];
+      state[s + S.DPY] += scale * x[o + 1];
+      // turn by the angle x[o + 2] (see integratePositions)
+      const t = scale * x[o + 2];
+      const t2 = t * t;
+      const rc = 1 - t2 * (0.5 - t2 * (1 / 24 - t2 * (1 / 720 - t2 / 40320)));
+      const rs = t * (1 - t2 * (1 / 6 - t2 * (1 / 120 - t2 * (1 / 5040 - t2 / 362880))));
+      const c = state[s + S.DQC];
+      const sn = state[s + S.DQS];
+      const nc = c * rc - sn * rs;
+      const ns = sn * rc + c * rs;
+      const inv = 1 / Math.sqrt(nc * nc + ns * ns);
+      state[s + S.DQC] = nc * inv;
+      state[s + S.DQS] = ns * inv;
+    }
+    return scale * turned;
+  }
+
+  /**
+   * The substep's position correction (see stabilize), after which the tree is factored again at the
+   * new positions, with the same limits held, for the velocity projections that follow. When it
+   * turned some body by more than RESTABILIZE_TURN, the linear step left the anchors apart by the
+   * arcs they turned (a 40-link chain uncurling at its limits: 3 cm): then its joints' rows (not the
+   * limits, already moved) are corrected once more.
+   */
+  stabilizeSubstep(ctx: JointContext, maxMove: number, maxTurn: number): void {
+    const turned = this.stabilize(ctx.state, true, maxMove, maxTurn);
+    if (turned < 0) return;
+    this.keepLimits = true;
+    this.factorBodyTree(ctx);
+    if (turned > RESTABILIZE_TURN && this.stabilize(ctx.state, false, maxMove, maxTurn) >= 0) {
+      this.factorBodyTree(ctx);
+    }
+    this.keepLimits = false;
+  }
+
+  /**
    * Gives each closure its effective mass through the tree: for each of its rows, the tree's velocity
    * response to that row's impulse, read back through both rows.
    */
   private closureMasses(ctx: JointContext): void {
-    const state = ctx.state;
     const jA = this.closureJA;
     const jB = this.closureJB;
     const x = this.x;
@@ -773,7 +911,7 @@ export class JointTree {
     const response = this.response;
     for (let c = 0; c < this.closures.length; c++) {
       const joint = this.closures[c];
-      joint.treeFill(state, jA, jB, this.closureErr, c);
+      joint.treeFill(ctx, jA, jB, this.closureErr, c, false);
       const nodeA = this.closureNodeA[c];
       const nodeB = this.closureNodeB[c];
       const k = joint.closureMass;
@@ -881,10 +1019,11 @@ export class JointTree {
     if (count === 0) return;
     const x = this.x;
     x.fill(0, 0, Block.ROWS * this.nodeCount);
-    // right-hand side: -(J v + bias) on the joints' rows, 0 on the bodies'
+    // right-hand side: -(J v + bias) on the joints' rows, 0 on the bodies'; the bias bounded (see pushLimit)
     const jA = this.jA;
     const jB = this.jB;
     const err = this.err;
+    const limit = this.pushLimit;
     for (let j = 0; j < count; j++) {
       const sa = this.slotA[j] * S.STRIDE;
       const sb = this.slotB[j] * S.STRIDE;
@@ -905,7 +1044,7 @@ export class JointTree {
         jB[m] * vBx +
         jB[m + 1] * vBy +
         jB[m + 2] * wB +
-        biasRate * err[e]
+        Math.max(-limit[e], Math.min(biasRate * err[e], limit[e]))
       );
       x[o + 1] = -(
         jA[m + 3] * vAx +
@@ -914,7 +1053,7 @@ export class JointTree {
         jB[m + 3] * vBx +
         jB[m + 4] * vBy +
         jB[m + 5] * wB +
-        biasRate * err[e + 1]
+        Math.max(-limit[e + 1], Math.min(biasRate * err[e + 1], limit[e + 1]))
       );
       x[o + 2] = -(
         jA[m + 6] * vAx +
@@ -923,7 +1062,7 @@ export class JointTree {
         jB[m + 6] * vBx +
         jB[m + 7] * vBy +
         jB[m + 8] * wB +
-        biasRate * err[e + 2]
+        Math.max(-limit[e + 2], Math.min(biasRate * err[e + 2], limit[e + 2]))
       );
     }
     this.substitute();
@@ -941,8 +1080,8 @@ export class JointTree {
     }
   }
 
-  /** Solves L D Lᵀ x = x in place (L in 3 × 3 blocks, see factorTree; nodes children first). */
-  private substitute(): void {
+  /** @internal Solves L D Lᵀ x = x in place (L in 3 × 3 blocks, see factorTree; nodes children first). */
+  substitute(): void {
     const nodes = this.nodeCount;
     const parent = this.parent;
     const x = this.x;

@@ -191,25 +191,43 @@ export abstract class Joint {
     this.sepY = state[sb + S.DPY] - state[sa + S.DPY] + this.dcy + this.rBy - this.rAy;
   }
 
-  /** @internal angular mass of the joint's limit and motor row through the tree (0 = its own) */
-  treeAxialMass = 0;
+  /**
+   * @internal Per axial row (0 and 1, see axialRows): its entry among the rows the JointTree weighs
+   * through the tree this step, or -1 when the row is solved with the two bodies' own masses.
+   */
+  axialEntry0 = -1;
+  axialEntry1 = -1;
 
-  /** @internal Whether the joint has a limit or motor row that the tree should weigh. */
-  hasAxialRow(): boolean {
-    return false;
+  /**
+   * @internal The rows this joint solves iteratively beside its tree rows (limits, motors, springs)
+   * along up to two directions, as bits: 1 for axial row 0, 2 for axial row 1.
+   */
+  axialRows(): number {
+    return 0;
   }
 
   /**
-   * @internal The Jacobian blocks (3 each) at A and B of that row, at the current positions: by
-   * default the relative rotation of B to A.
+   * @internal The Jacobian blocks (3 each) at A and B of axial row `row`, at the current positions:
+   * by default the relative rotation of B to A.
    */
-  axialJacobian(_state: Float64Array, jA: Float64Array, jB: Float64Array): void {
+  axialJacobian(_state: Float64Array, _row: number, jA: Float64Array, jB: Float64Array): void {
     jA[0] = 0;
     jA[1] = 0;
     jA[2] = -1;
     jB[0] = 0;
     jB[1] = 0;
     jB[2] = 1;
+  }
+
+  /**
+   * @internal Solves the rows of axial row `row` (its spring, motor, limits: rows that share its
+   * Jacobian) once, given the row's current `speed` (J v) and effective `mass`, and returns the
+   * impulse to apply along the row. The rows follow one another: each sees the speed the ones
+   * before it left (speed + impulse / mass). Used by the JointTree for rows it weighs through the
+   * tree (TreeAxials) and by the joint itself for the others, with its bodies' own mass.
+   */
+  solveAxial(_ctx: JointContext, _row: number, _speed: number, _mass: number, _useBias: boolean): number {
+    return 0;
   }
 
   /**
@@ -232,15 +250,67 @@ export abstract class Joint {
 
   /**
    * @internal Updates the anchors and writes the tree rows of joint `j` of the tree: the Jacobian
-   * blocks of A and B (rows × 3 at 9j, stride 3) and the position errors (at 3j).
+   * blocks of A and B (rows × 3 at 9j, stride 3) and the position errors (at 3j); with `limits`, a
+   * limit the bodies reach within the substep as one more row (see fillLimitRow). Returns the number
+   * of rows written.
    */
   treeFill(
-    _state: Float64Array,
+    _ctx: JointContext,
     _jA: Float64Array,
     _jB: Float64Array,
     _err: Float64Array,
     _j: number,
-  ): void {}
+    _limits: boolean,
+  ): number {
+    return 0;
+  }
+
+  /** @internal the limit the tree holds as a row this substep: 1 lower, -1 upper, 0 none */
+  treeLimit = 0;
+
+  /**
+   * Chooses the limit the tree holds as row `row` of tree joint `j` this substep and writes it; returns
+   * the joint's row count with it. A limit is held once the bodies reach it (`roomLower` or
+   * `roomUpper`, the room left, at or below 0); a held limit lets go when its row pulled last time
+   * (its impulse, `lowerImpulse` or `upperImpulse`, turned negative) while the bodies were within a
+   * substep's push of it (`slop`): deeper, it holds on while stabilize pushes them back. `jac` holds
+   * the row's Jacobian towards more room above the lower limit (A's block, then B's). A limit not
+   * held is an iterative row (TreeAxials: it brakes the bodies as they come close).
+   *
+   * Held by the tree, a limited chain's limits are exact together: as iterative rows, even through
+   * the tree, the 40 limits of a chain started a radian past them did not hold it at all.
+   */
+  protected fillLimitRow(
+    ctx: JointContext,
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+    row: number,
+    jac: Float64Array,
+    slop: number,
+    roomLower: number,
+    roomUpper: number,
+    lowerImpulse: number,
+    upperImpulse: number,
+  ): number {
+    if (!ctx.tree.keepLimits) {
+      const lower = roomLower <= 0 && !(this.treeLimit === 1 && lowerImpulse < 0 && roomLower > -slop);
+      const upper = roomUpper <= 0 && !(this.treeLimit === -1 && upperImpulse < 0 && roomUpper > -slop);
+      this.treeLimit = lower && (!upper || roomLower <= roomUpper) ? 1 : upper ? -1 : 0;
+    }
+    if (this.treeLimit === 0) return row;
+    const sign = this.treeLimit;
+    const m = 9 * j + 3 * row;
+    for (let c = 0; c < 3; c++) {
+      jA[m + c] = sign * jac[c];
+      jB[m + c] = sign * jac[3 + c];
+    }
+    // the row keeps the bodies from going further; stabilize moves them back (see JointTree)
+    err[3 * j + row] = sign === 1 ? roomLower : roomUpper;
+    ctx.tree.markLimitRow(j, row);
+    return row + 1;
+  }
 
   /**
    * @internal Adds the tree solver's impulse on the tree rows: minus `solution[o..]` (the rows'

@@ -5,7 +5,7 @@ import { S } from '../body-store';
 import type { World } from '../world';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
-import { relativeAngle } from './joint-math';
+import { relativeAngle, unwindAngle } from './joint-math';
 
 export interface MotorOptions {
   /** wanted position of B's centre in A's frame */
@@ -94,7 +94,7 @@ export class MotorJoint extends Joint {
     const oy = this.o.linearOffsetY - ctx.lcy[this.a];
     this.offsetX = c * ox - s * oy;
     this.offsetY = s * ox + c * oy;
-    this.angle0 = relativeAngle(c, s, ctx.qc[this.b], ctx.qs[this.b]) - this.o.angularOffset;
+    this.angle0 = unwindAngle(relativeAngle(c, s, ctx.qc[this.b], ctx.qs[this.b]) - this.o.angularOffset);
   }
 
   /** @internal */

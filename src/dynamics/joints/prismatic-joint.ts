@@ -3,8 +3,9 @@ import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
 import type { World } from '../world';
+import { motorImpulse } from './axial-rows';
 import type { JointContext } from './joint-context';
-import { relativeAngle } from './joint-math';
+import { relativeAngle, unwindAngle } from './joint-math';
 import { SliderJoint, type SliderOptions } from './slider-joint';
 
 export interface PrismaticOptions {
@@ -70,25 +71,34 @@ export class PrismaticJoint extends SliderJoint {
     return this.o.enableMotor;
   }
 
-  /** @internal the motor and the limits push along the axis: their mass through the tree */
-  override hasAxialRow(): boolean {
-    return this.o.enableMotor || this.s.enableLimit;
-  }
-
-  /** @internal the row along the axis */
-  override axialJacobian(state: Float64Array, jA: Float64Array, jB: Float64Array): void {
-    this.updateAxis(state);
-    jA[0] = -this.ux;
-    jA[1] = -this.uy;
-    jA[2] = -this.a1;
-    jB[0] = this.ux;
-    jB[1] = this.uy;
-    jB[2] = this.a2;
+  /** @internal motor, spring and limits push along the axis: one axial row (limits: see Joint) */
+  override axialRows(): number {
+    return this.o.enableMotor || this.s.enableSpring || this.s.enableLimit ? 1 : 0;
   }
 
   /** @internal */
-  protected override axisRowMass(): number {
-    return this.treeAxialMass > 0 ? this.treeAxialMass : this.axialMass;
+  protected axisEntry(): number {
+    return this.axialEntry0;
+  }
+
+  /** @internal */
+  protected override axisMotor(ctx: JointContext, speed: number, mass: number): number {
+    const o = this.o;
+    if (!o.enableMotor) return 0;
+    const old = this.axialImpulse;
+    this.axialImpulse = motorImpulse(old, speed, o.motorSpeed, mass, o.maxMotorForce * ctx.h);
+    return this.axialImpulse - old;
+  }
+
+  /** @internal the axis rows (see Joint.solveAxial) */
+  override solveAxial(
+    ctx: JointContext,
+    _row: number,
+    speed: number,
+    mass: number,
+    useBias: boolean,
+  ): number {
+    return this.solveAxisRows(ctx, speed, mass, useBias);
   }
 
   /** @internal the perpendicular and angular rows */
@@ -98,28 +108,32 @@ export class PrismaticJoint extends SliderJoint {
 
   /** @internal */
   override treeFill(
-    state: Float64Array,
+    ctx: JointContext,
     jA: Float64Array,
     jB: Float64Array,
     err: Float64Array,
     j: number,
-  ): void {
-    this.updateAxis(state);
+    limits: boolean,
+  ): number {
+    this.updateAxis(ctx.state);
     this.fillPerpRow(jA, jB, err, j, 0);
-    this.fillAngleRow(state, jA, jB, err, j, 1, this.angle0);
+    this.fillAngleRow(ctx.state, jA, jB, err, j, 1, this.angle0);
+    return this.fillAxisLimitRow(ctx, jA, jB, err, j, 2, limits);
   }
 
   /** @internal */
   override treeAddImpulse(solution: Float64Array, o: number, keep: number): void {
     this.perpImpulse = keep * this.perpImpulse - solution[o];
     this.angularImpulse = keep * this.angularImpulse - solution[o + 1];
+    this.addLimitImpulse(solution, o + 2, keep);
   }
 
   /** @internal */
   prepare(ctx: JointContext): void {
     this.prepareSlider(ctx);
-    this.angle0 =
-      relativeAngle(ctx.qc[this.a], ctx.qs[this.a], ctx.qc[this.b], ctx.qs[this.b]) - this.o.referenceAngle;
+    this.angle0 = unwindAngle(
+      relativeAngle(ctx.qc[this.a], ctx.qs[this.a], ctx.qc[this.b], ctx.qs[this.b]) - this.o.referenceAngle,
+    );
     if (!this.o.enableMotor) this.axialImpulse = 0;
   }
 
@@ -140,17 +154,6 @@ export class PrismaticJoint extends SliderJoint {
   /** @internal */
   solve(ctx: JointContext, useBias: boolean): void {
     const state = ctx.state;
-    const o = this.o;
-    if (o.enableMotor) {
-      this.updateAxis(state);
-      const max = o.maxMotorForce * ctx.h;
-      const old = this.axialImpulse;
-      this.axialImpulse = Math.max(
-        -max,
-        Math.min(old - this.axisRowMass() * (this.axialSpeed(state) - o.motorSpeed), max),
-      );
-      this.applyAxial(state, this.axialImpulse - old);
-    }
     this.solveSlider(ctx, useBias);
     // no rotation relative to A
     const k = this.iA + this.iB;
@@ -165,7 +168,7 @@ export class PrismaticJoint extends SliderJoint {
           this.angle0 +
           relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
         const soft = ctx.jointSoftness;
-        bias = soft.biasRate * C;
+        bias = Math.max(-ctx.jointPushMaxTurn, Math.min(soft.biasRate * C, ctx.jointPushMaxTurn));
         massScale = soft.massScale;
         impulseScale = soft.impulseScale;
       }

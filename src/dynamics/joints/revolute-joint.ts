@@ -2,13 +2,17 @@ import { checkBoolean, checkFinite, checkNonNegative, FulcrumError } from '../..
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
-import { makeSoftness, type Softness } from '../softness';
+import { makeSoftness, type Softness, springImpulse } from '../softness';
 import type { World } from '../world';
+import { limitImpulse, motorImpulse } from './axial-rows';
 import { H } from './hinge-batch';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
-import { relativeAngle, solve22, solved } from './joint-math';
+import { relativeAngle, solve22, solved, unwindAngle } from './joint-math';
 import { CLOSURE_REGULARIZATION } from './joint-tree';
+
+/** the Jacobian of B's turn relative to A (A's block, then B's) */
+const TURN_JACOBIAN = new Float64Array([0, 0, -1, 0, 0, 1]);
 
 export interface RevoluteOptions {
   referenceAngle: number;
@@ -61,7 +65,7 @@ export class RevoluteJoint extends Joint {
     this.check();
     const a = this.bodyA.rotation;
     const b = this.bodyB.rotation;
-    return relativeAngle(a.c, a.s, b.c, b.s) - this.o.referenceAngle;
+    return unwindAngle(relativeAngle(a.c, a.s, b.c, b.s) - this.o.referenceAngle);
   }
 
   get motorSpeed(): number {
@@ -133,9 +137,10 @@ export class RevoluteJoint extends Joint {
     return (this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse) * this.invH;
   }
 
-  /** @internal */
-  override hasAxialRow(): boolean {
-    return this.o.enableLimit || this.o.enableMotor;
+  /** @internal spring, motor and limits turn B relative to A: one axial row */
+  override axialRows(): number {
+    const o = this.o;
+    return o.enableMotor || o.enableSpring || o.enableLimit ? 1 : 0;
   }
 
   /** @internal */
@@ -155,20 +160,43 @@ export class RevoluteJoint extends Joint {
 
   /** @internal */
   override treeFill(
-    state: Float64Array,
+    ctx: JointContext,
     jA: Float64Array,
     jB: Float64Array,
     err: Float64Array,
     j: number,
-  ): void {
+    limits: boolean,
+  ): number {
+    const state = ctx.state;
     this.updateAnchors(state);
     this.fillPointRows(jA, jB, err, j);
+    if (!limits || !this.o.enableLimit || this.iA + this.iB === 0) {
+      this.treeLimit = 0;
+      return 2;
+    }
+    const angle = this.currentAngle(state);
+    return this.fillLimitRow(
+      ctx,
+      jA,
+      jB,
+      err,
+      j,
+      2,
+      TURN_JACOBIAN,
+      ctx.jointPushMaxTurn * ctx.h,
+      angle - this.o.lowerAngle,
+      this.o.upperAngle - angle,
+      this.lowerImpulse,
+      this.upperImpulse,
+    );
   }
 
   /** @internal */
   override treeAddImpulse(solution: Float64Array, o: number, keep: number): void {
     this.linearX = keep * this.linearX - solution[o];
     this.linearY = keep * this.linearY - solution[o + 1];
+    if (this.treeLimit === 1) this.lowerImpulse = keep * this.lowerImpulse - solution[o + 2];
+    else if (this.treeLimit === -1) this.upperImpulse = keep * this.upperImpulse - solution[o + 2];
   }
 
   /** @internal */
@@ -217,8 +245,9 @@ export class RevoluteJoint extends Joint {
     this.axialMass = k > 0 ? 1 / k : 0;
     // only limits and springs read the angle (computing it boxes a double per joint and step)
     if (this.o.enableLimit || this.o.enableSpring)
-      this.angle0 =
-        relativeAngle(ctx.qc[this.a], ctx.qs[this.a], ctx.qc[this.b], ctx.qs[this.b]) - this.o.referenceAngle;
+      this.angle0 = unwindAngle(
+        relativeAngle(ctx.qc[this.a], ctx.qs[this.a], ctx.qc[this.b], ctx.qs[this.b]) - this.o.referenceAngle,
+      );
     makeSoftness(this.o.enableSpring ? this.o.hertz : 0, this.o.dampingRatio, ctx.h, this.spring);
     if (!this.o.enableSpring) this.springImpulse = 0;
     if (!this.o.enableMotor) this.motorImpulse = 0;
@@ -264,87 +293,82 @@ export class RevoluteJoint extends Joint {
     );
   }
 
+  /** B's angular velocity relative to A's. */
+  private relativeTurn(state: Float64Array): number {
+    return state[this.b * S.STRIDE + S.W] - state[this.a * S.STRIDE + S.W];
+  }
+
+  /** @internal spring, motor and limits, in that order, on B's turn relative to A (see Joint) */
+  override solveAxial(
+    ctx: JointContext,
+    _row: number,
+    speed: number,
+    mass: number,
+    useBias: boolean,
+  ): number {
+    if (mass === 0) return 0;
+    const o = this.o;
+    const invMass = 1 / mass;
+    let total = 0;
+    if (o.enableSpring) {
+      const impulse = springImpulse(
+        this.spring,
+        o.hertz,
+        ctx.h,
+        this.iA + this.iB,
+        invMass,
+        speed,
+        this.currentAngle(ctx.state),
+        this.springImpulse,
+      );
+      this.springImpulse += impulse;
+      speed += impulse * invMass;
+      total += impulse;
+    }
+    if (o.enableMotor) {
+      const old = this.motorImpulse;
+      this.motorImpulse = motorImpulse(old, speed, o.motorSpeed, mass, o.maxMotorTorque * ctx.h);
+      const impulse = this.motorImpulse - old;
+      speed += impulse * invMass;
+      total += impulse;
+    }
+    // a limit the tree holds this substep is its row (Joint.fillLimitRow)
+    if (o.enableLimit && this.treeLimit === 0) {
+      const angle = this.currentAngle(ctx.state);
+      const maxPush = ctx.jointPushMaxTurn;
+      // lower limit: angle - lower >= 0
+      const oldLower = this.lowerImpulse;
+      this.lowerImpulse = limitImpulse(ctx, useBias, oldLower, angle - o.lowerAngle, speed, mass, maxPush);
+      const lower = this.lowerImpulse - oldLower;
+      speed += lower * invMass;
+      // upper limit: upper - angle >= 0, pushing the other way
+      const oldUpper = this.upperImpulse;
+      this.upperImpulse = limitImpulse(ctx, useBias, oldUpper, o.upperAngle - angle, -speed, mass, maxPush);
+      total += lower - (this.upperImpulse - oldUpper);
+    }
+    return total;
+  }
+
   /** @internal */
   solve(ctx: JointContext, useBias: boolean): void {
     const state = ctx.state;
-    const o = this.o;
     const sa = this.a * S.STRIDE;
     const sb = this.b * S.STRIDE;
+    // the axial rows here unless the tree solves them (TreeAxials)
+    if (this.axialEntry0 < 0 && this.axialRows() !== 0) {
+      const impulse = this.solveAxial(ctx, 0, this.relativeTurn(state), this.axialMass, useBias);
+      state[sa + S.W] -= this.iA * impulse;
+      state[sb + S.W] += this.iB * impulse;
+    }
+    if (this.inTree) return;
     const mA = this.mA;
     const iA = this.iA;
     const mB = this.mB;
     const iB = this.iB;
     let wA = state[sa + S.W];
     let wB = state[sb + S.W];
-    const fixedRotation = iA + iB === 0;
-
-    if (o.enableSpring && !fixedRotation) {
-      const C = this.currentAngle(state);
-      const bias = this.spring.biasRate * C;
-      const impulse =
-        -this.spring.massScale * this.axialMass * (wB - wA + bias) -
-        this.spring.impulseScale * this.springImpulse;
-      this.springImpulse += impulse;
-      wA -= iA * impulse;
-      wB += iB * impulse;
-    }
-    // limit and motor turn the bodies about the hinge: through the tree, their angular mass
-    const axialMass = this.treeAxialMass > 0 ? this.treeAxialMass : this.axialMass;
-    if (o.enableMotor && !fixedRotation) {
-      const max = o.maxMotorTorque * ctx.h;
-      const old = this.motorImpulse;
-      this.motorImpulse = Math.max(-max, Math.min(old - axialMass * (wB - wA - o.motorSpeed), max));
-      const impulse = this.motorImpulse - old;
-      wA -= iA * impulse;
-      wB += iB * impulse;
-    }
-    if (o.enableLimit && !fixedRotation) {
-      const angle = this.currentAngle(state);
-      const soft = ctx.jointSoftness;
-      // lower limit: angle - lower >= 0
-      {
-        const C = angle - o.lowerAngle;
-        let bias = 0;
-        let massScale = 1;
-        let impulseScale = 0;
-        if (C > 0) bias = C * ctx.invH;
-        else if (useBias) {
-          bias = soft.biasRate * C;
-          massScale = soft.massScale;
-          impulseScale = soft.impulseScale;
-        }
-        const old = this.lowerImpulse;
-        const next = Math.max(old - massScale * axialMass * (wB - wA + bias) - impulseScale * old, 0);
-        this.lowerImpulse = next;
-        wA -= iA * (next - old);
-        wB += iB * (next - old);
-      }
-      // upper limit: upper - angle >= 0
-      {
-        const C = o.upperAngle - angle;
-        let bias = 0;
-        let massScale = 1;
-        let impulseScale = 0;
-        if (C > 0) bias = C * ctx.invH;
-        else if (useBias) {
-          bias = soft.biasRate * C;
-          massScale = soft.massScale;
-          impulseScale = soft.impulseScale;
-        }
-        const old = this.upperImpulse;
-        const next = Math.max(old - massScale * axialMass * (wA - wB + bias) - impulseScale * old, 0);
-        this.upperImpulse = next;
-        wA += iA * (next - old);
-        wB -= iB * (next - old);
-      }
-    }
 
     // point-to-point, unless the tree solver owns it
-    if (this.inTree) {
-      state[sa + S.W] = wA;
-      state[sb + S.W] = wB;
-      return;
-    }
     this.updateAnchors(state);
     const rAx = this.rAx;
     const rAy = this.rAy;
@@ -364,6 +388,15 @@ export class RevoluteJoint extends Joint {
       const soft = ctx.jointSoftness;
       biasX = soft.biasRate * this.sepX;
       biasY = soft.biasRate * this.sepY;
+      // bounded, as a contact's push is: joints torn apart in a loop that cannot close (or limits
+      // against pins) otherwise pull at any speed, and the relax pass cannot take all of it back
+      const b2 = biasX * biasX + biasY * biasY;
+      const maxPush = ctx.jointPushMaxSpeed;
+      if (b2 > maxPush * maxPush) {
+        const f = maxPush / Math.sqrt(b2);
+        biasX *= f;
+        biasY *= f;
+      }
       massScale = soft.massScale;
       impulseScale = soft.impulseScale;
     }

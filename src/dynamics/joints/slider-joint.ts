@@ -2,8 +2,9 @@ import { checkBoolean, checkFinite, checkNonNegative, FulcrumError } from '../..
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
-import { makeSoftness, type Softness } from '../softness';
+import { makeSoftness, type Softness, springImpulse } from '../softness';
 import type { World } from '../world';
+import { limitImpulse } from './axial-rows';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 
@@ -148,6 +149,9 @@ export abstract class SliderJoint extends Joint {
     state[sb + S.W] += this.iB * impulse * this.a2;
   }
 
+  /** The tree's entry of the axis row (see Joint.axialEntry0), -1 when it is not weighed there. */
+  protected abstract axisEntry(): number;
+
   /** Perpendicular impulse: P along perp = (-uy, ux), with its angular terms. */
   protected applyPerp(state: Float64Array, impulse: number): void {
     const px = -this.uy;
@@ -171,9 +175,15 @@ export abstract class SliderJoint extends Joint {
     return this.s.enableSpring || this.s.enableLimit || this.hasMotor();
   }
 
-  /** The effective mass of the rows along the axis (limits, and a prismatic motor). */
-  protected axisRowMass(): number {
-    return this.axialMass;
+  /** @internal the row along the axis */
+  override axialJacobian(state: Float64Array, _row: number, jA: Float64Array, jB: Float64Array): void {
+    this.updateAxis(state);
+    jA[0] = -this.ux;
+    jA[1] = -this.uy;
+    jA[2] = -this.a1;
+    jB[0] = this.ux;
+    jB[1] = this.uy;
+    jB[2] = this.a2;
   }
 
   /** Whether the subclass's motor is on. */
@@ -199,6 +209,56 @@ export abstract class SliderJoint extends Joint {
     this.clearTreeRows(jA, jB, err, j, row + 1);
   }
 
+  /** the axis row's Jacobian (A's block, then B's) for fillLimitRow */
+  private readonly axisJacobian = new Float64Array(6);
+
+  /**
+   * Writes the limit the bodies reach along the axis within the substep, if any, as row `row` of tree
+   * joint `j` (see Joint.fillLimitRow); the axis must be current (updateAxis). Returns the row count.
+   */
+  protected fillAxisLimitRow(
+    ctx: JointContext,
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+    row: number,
+    limits: boolean,
+  ): number {
+    const o = this.s;
+    if (!limits || !o.enableLimit) {
+      this.treeLimit = 0;
+      return row;
+    }
+    const jac = this.axisJacobian;
+    jac[0] = -this.ux;
+    jac[1] = -this.uy;
+    jac[2] = -this.a1;
+    jac[3] = this.ux;
+    jac[4] = this.uy;
+    jac[5] = this.a2;
+    return this.fillLimitRow(
+      ctx,
+      jA,
+      jB,
+      err,
+      j,
+      row,
+      jac,
+      ctx.jointPushMaxSpeed * ctx.h,
+      this.axialPosition - o.lower,
+      o.upper - this.axialPosition,
+      this.lowerImpulse,
+      this.upperImpulse,
+    );
+  }
+
+  /** Adds the tree's impulse on the limit row at `solution[o]` (see treeAddImpulse). */
+  protected addLimitImpulse(solution: Float64Array, o: number, keep: number): void {
+    if (this.treeLimit === 1) this.lowerImpulse = keep * this.lowerImpulse - solution[o];
+    else if (this.treeLimit === -1) this.upperImpulse = keep * this.upperImpulse - solution[o];
+  }
+
   /** Forgets the slider's own impulses (axial, perpendicular). */
   protected forgetSliderImpulses(): void {
     this.perpImpulse = 0;
@@ -215,43 +275,75 @@ export abstract class SliderJoint extends Joint {
     this.applyPerp(state, this.perpImpulse);
   }
 
-  /** Spring and limits along the axis, then the perpendicular constraint unless the tree owns it. */
+  /** The impulse of a motor along the axis after one solve (a prismatic's; none by default). */
+  protected axisMotor(_ctx: JointContext, _speed: number, _mass: number): number {
+    return 0;
+  }
+
+  /**
+   * The rows along the axis given its speed and mass (see Joint.solveAxial): motor, spring, then
+   * limits; returns their impulse. Needs the axis current (updateAxis).
+   */
+  protected solveAxisRows(ctx: JointContext, speed: number, mass: number, useBias: boolean): number {
+    if (mass === 0) return 0;
+    const o = this.s;
+    const invMass = 1 / mass;
+    let total = this.axisMotor(ctx, speed, mass);
+    speed += total * invMass;
+    if (o.enableSpring && o.hertz > 0) {
+      const impulse = springImpulse(
+        this.spring,
+        o.hertz,
+        ctx.h,
+        this.mA + this.mB,
+        invMass,
+        speed,
+        this.axialPosition,
+        this.springImpulse,
+      );
+      this.springImpulse += impulse;
+      speed += impulse * invMass;
+      total += impulse;
+    }
+    // a limit the tree holds this substep is its row (Joint.fillLimitRow)
+    if (o.enableLimit && this.treeLimit === 0) {
+      const maxPush = ctx.jointPushMaxSpeed;
+      const oldLower = this.lowerImpulse;
+      this.lowerImpulse = limitImpulse(
+        ctx,
+        useBias,
+        oldLower,
+        this.axialPosition - o.lower,
+        speed,
+        mass,
+        maxPush,
+      );
+      const lower = this.lowerImpulse - oldLower;
+      speed += lower * invMass;
+      const oldUpper = this.upperImpulse;
+      this.upperImpulse = limitImpulse(
+        ctx,
+        useBias,
+        oldUpper,
+        o.upper - this.axialPosition,
+        -speed,
+        mass,
+        maxPush,
+      );
+      total += lower - (this.upperImpulse - oldUpper);
+    }
+    return total;
+  }
+
+  /**
+   * The rows along the axis (unless the tree solves them: TreeAxials), then the perpendicular
+   * constraint unless the tree owns it.
+   */
   protected solveSlider(ctx: JointContext, useBias: boolean): void {
     const state = ctx.state;
-    const o = this.s;
     this.updateAxis(state);
-    if (o.enableSpring && o.hertz > 0) {
-      const impulse =
-        -this.spring.massScale *
-          this.axialMass *
-          (this.axialSpeed(state) + this.spring.biasRate * this.axialPosition) -
-        this.spring.impulseScale * this.springImpulse;
-      this.springImpulse += impulse;
-      this.applyAxial(state, impulse);
-    }
-    if (o.enableLimit) {
-      const soft = ctx.jointSoftness;
-      for (let side = 0; side < 2; side++) {
-        const C = side === 0 ? this.axialPosition - o.lower : o.upper - this.axialPosition;
-        const sign = side === 0 ? 1 : -1;
-        let bias = 0;
-        let massScale = 1;
-        let impulseScale = 0;
-        if (C > 0) bias = C * ctx.invH;
-        else if (useBias) {
-          bias = soft.biasRate * C;
-          massScale = soft.massScale;
-          impulseScale = soft.impulseScale;
-        }
-        const old = side === 0 ? this.lowerImpulse : this.upperImpulse;
-        const next = Math.max(
-          old - massScale * this.axisRowMass() * (sign * this.axialSpeed(state) + bias) - impulseScale * old,
-          0,
-        );
-        if (side === 0) this.lowerImpulse = next;
-        else this.upperImpulse = next;
-        this.applyAxial(state, sign * (next - old));
-      }
+    if (this.axisEntry() < 0) {
+      this.applyAxial(state, this.solveAxisRows(ctx, this.axialSpeed(state), this.axialMass, useBias));
     }
     if (this.inTree) return;
     // no motion across the axis
@@ -275,7 +367,9 @@ export abstract class SliderJoint extends Joint {
       let impulseScale = 0;
       if (useBias) {
         const soft = ctx.jointSoftness;
-        bias = soft.biasRate * (this.sepX * px + this.sepY * py);
+        // bounded, as a contact's push is (see the revolute joint's point rows)
+        const max = ctx.jointPushMaxSpeed;
+        bias = Math.max(-max, Math.min(soft.biasRate * (this.sepX * px + this.sepY * py), max));
         massScale = soft.massScale;
         impulseScale = soft.impulseScale;
       }

@@ -3,6 +3,7 @@ import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
 import type { World } from '../world';
+import { motorImpulse } from './axial-rows';
 import type { JointContext } from './joint-context';
 import { SliderJoint, type SliderOptions } from './slider-joint';
 
@@ -70,9 +71,38 @@ export class WheelJoint extends SliderJoint {
     return this.o.enableMotor;
   }
 
-  /** @internal the motor turns the wheel relative to A: its mass through the tree (see JointTree) */
-  override hasAxialRow(): boolean {
-    return this.o.enableMotor;
+  /** @internal row 0 the motor's (B turns relative to A), row 1 along the axis (spring, limits) */
+  override axialRows(): number {
+    return (this.o.enableMotor ? 1 : 0) | (this.s.enableSpring || this.s.enableLimit ? 2 : 0);
+  }
+
+  /** @internal */
+  override axialJacobian(state: Float64Array, row: number, jA: Float64Array, jB: Float64Array): void {
+    if (row === 1) {
+      super.axialJacobian(state, row, jA, jB);
+      return;
+    }
+    jA[0] = 0;
+    jA[1] = 0;
+    jA[2] = -1;
+    jB[0] = 0;
+    jB[1] = 0;
+    jB[2] = 1;
+  }
+
+  /** @internal */
+  protected axisEntry(): number {
+    return this.axialEntry1;
+  }
+
+  /** @internal row 0 the motor, row 1 the axis rows (see Joint.solveAxial) */
+  override solveAxial(ctx: JointContext, row: number, speed: number, mass: number, useBias: boolean): number {
+    if (row === 1) return this.solveAxisRows(ctx, speed, mass, useBias);
+    const o = this.o;
+    if (!o.enableMotor || mass === 0) return 0;
+    const old = this.motorImpulse;
+    this.motorImpulse = motorImpulse(old, speed, o.motorSpeed, mass, o.maxMotorTorque * ctx.h);
+    return this.motorImpulse - old;
   }
 
   /** @internal the perpendicular row */
@@ -82,19 +112,22 @@ export class WheelJoint extends SliderJoint {
 
   /** @internal */
   override treeFill(
-    state: Float64Array,
+    ctx: JointContext,
     jA: Float64Array,
     jB: Float64Array,
     err: Float64Array,
     j: number,
-  ): void {
-    this.updateAxis(state);
+    limits: boolean,
+  ): number {
+    this.updateAxis(ctx.state);
     this.fillPerpRow(jA, jB, err, j, 0);
+    return this.fillAxisLimitRow(ctx, jA, jB, err, j, 1, limits);
   }
 
   /** @internal */
   override treeAddImpulse(solution: Float64Array, o: number, keep: number): void {
     this.perpImpulse = keep * this.perpImpulse - solution[o];
+    this.addLimitImpulse(solution, o + 1, keep);
   }
 
   /** @internal */
@@ -120,19 +153,12 @@ export class WheelJoint extends SliderJoint {
   /** @internal */
   solve(ctx: JointContext, useBias: boolean): void {
     const state = ctx.state;
-    const o = this.o;
     const k = this.iA + this.iB;
-    if (o.enableMotor && k > 0) {
+    // the motor here unless the tree solves it (TreeAxials)
+    if (this.o.enableMotor && k > 0 && this.axialEntry0 < 0) {
       const sa = this.a * S.STRIDE;
       const sb = this.b * S.STRIDE;
-      const max = o.maxMotorTorque * ctx.h;
-      const old = this.motorImpulse;
-      const mass = this.treeAxialMass > 0 ? this.treeAxialMass : 1 / k;
-      this.motorImpulse = Math.max(
-        -max,
-        Math.min(old - mass * (state[sb + S.W] - state[sa + S.W] - o.motorSpeed), max),
-      );
-      const impulse = this.motorImpulse - old;
+      const impulse = this.solveAxial(ctx, 0, state[sb + S.W] - state[sa + S.W], 1 / k, useBias);
       state[sa + S.W] -= this.iA * impulse;
       state[sb + S.W] += this.iB * impulse;
     }
