@@ -66,7 +66,9 @@ import {
  *   20  …  payload: the World object as one value of snapshot-codec.ts
  *
  * Not kept: event handlers (`world.on`); the sleep and wake events of the last step in `world.events`
- * (the contact, sensor and hit events are engine buffers: the restored world reads the same); `userData` (of bodies, shapes and joints) unless it is plain data (numbers,
+ * (the contact, sensor and hit events are engine buffers: the restored world reads the same, less
+ * those naming a shape destroyed between that step and the snapshot, which it has no handle for);
+ * `userData` (of bodies, shapes and joints) unless it is plain data (numbers,
  * strings, booleans, null, plain objects and arrays, typed arrays, Map, Set of those): anything else,
  * e.g. a class instance or a function, becomes `undefined`. Functions held by engine objects are not
  * data: the fresh world's own are kept.

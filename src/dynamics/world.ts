@@ -237,6 +237,7 @@ export class World {
   destroyBody(body: Body): void {
     this.checkUnlocked();
     const b = this.checkBody('body', body);
+    this.dispatcher.settle();
     const core = this.core;
     for (const joint of core.bodyJoints[b]?.slice() ?? []) this.removeJoint(joint);
     core.bodyJoints[b] = undefined;
@@ -384,6 +385,7 @@ export class World {
     const b = body.check();
     if (!(shape instanceof ShapeHandle) || shape.body !== body) fail('shape', shape, 'a shape of this body');
     const s = shape.check();
+    this.dispatcher.settle();
     const core = this.core;
     core.destroyShapeContacts(s, true);
     core.destroyProxy(s);
