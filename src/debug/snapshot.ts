@@ -55,6 +55,11 @@ import {
  * does not have (handles, joints) from the classes below; stepping it is bit-identical to stepping
  * the original.
  *
+ * The bytes depend on the world's history of steps and changes only: queries, shape tests, event
+ * reads and debug drawing between steps keep their scratch outside the world (module scratch of the
+ * query, tree and shape code), so that two peers with the same history compare snapshots byte for
+ * byte (test/world/snapshot.test.ts runs a battery of them between steps).
+ *
  * Bytes (little-endian):
  *   0   4  magic "FLCS"
  *   4   2  format version (SNAPSHOT_VERSION)

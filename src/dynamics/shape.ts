@@ -9,7 +9,7 @@ import {
 import { rayCastGeometry, testPoint } from '../geometry/raycast';
 import { type Geometry, makeRayHit } from '../geometry/types';
 import type { AABB } from '../math/aabb';
-import type { Vec2 } from '../math/vec2';
+import { makeTransform, type Vec2 } from '../math/vec2';
 import type { Body } from './body';
 import { ShapeFlag } from './shape-store';
 
@@ -116,6 +116,8 @@ export function resolveShapeDef(def: ShapeDef | undefined): ResolvedShapeDef {
 }
 
 const hit = makeRayHit();
+/** the body's transform for testPoint and rayCast: not the world's scratch, which a snapshot holds */
+const xf = makeTransform();
 
 /** A shape handle: valid until the shape or its body is destroyed. */
 export class ShapeHandle {
@@ -257,7 +259,7 @@ export class ShapeHandle {
     const s = this.check();
     const p = checkVec2('point', point);
     const core = this.body.world.core;
-    return testPoint(this.geometry, core.fillTransform(core.shapes.body[s], core.xfA), p.x, p.y);
+    return testPoint(this.geometry, core.fillTransform(core.shapes.body[s], xf), p.x, p.y);
   }
 
   /** Ray from `origin` along `translation`; null when it misses (see geometry/raycast.ts for the rules). */
@@ -266,7 +268,7 @@ export class ShapeHandle {
     const o = checkVec2('origin', origin);
     const t = checkVec2('translation', translation);
     const core = this.body.world.core;
-    const xf = core.fillTransform(core.shapes.body[s], core.xfA);
+    core.fillTransform(core.shapes.body[s], xf);
     if (!rayCastGeometry(this.geometry, xf, o.x, o.y, t.x, t.y, hit)) return null;
     return {
       point: { x: hit.pointX, y: hit.pointY },
