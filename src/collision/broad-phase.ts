@@ -245,13 +245,15 @@ export class BroadPhase {
 
   /** As query, for the box at `at` in `boxes` (see DynamicTree.queryBox). */
   queryBox(boxes: Float64Array, at: number, typeMask: number, out: IntList): void {
-    const found = this.found;
     for (let type = 0; type < 3; type++) {
       if ((typeMask & (1 << type)) === 0) continue;
       const tree = this.trees[type];
-      found.clear();
-      tree.queryBox(boxes, at, found);
-      for (let i = 0; i < found.length; i++) out.push(tree.getUserData(found.data[i]));
+      // the tree appends proxy ids, turned into shape ids in place: no scratch of the broad phase is
+      // touched, so that queries between steps leave the world's state (and its snapshot) as it was
+      const start = out.length;
+      tree.queryBox(boxes, at, out);
+      const data = out.data;
+      for (let i = start; i < out.length; i++) data[i] = tree.getUserData(data[i]);
     }
   }
 
@@ -281,7 +283,9 @@ export class BroadPhase {
         adapter,
       );
     }
+    // left as a world that never cast a ray has it (see queryBox)
     adapter.target = null;
+    adapter.type = 0;
     return maxFraction;
   }
 

@@ -33,6 +33,13 @@ enum Refit {
 }
 
 /**
+ * The walks' stacks, shared by every tree: scratch, not a tree's state, so that a world's queries
+ * leave no trace in its snapshot. (A ray-cast visitor may query, which is why the two are apart.)
+ */
+let queryStack: Int32Array = new Int32Array(64);
+let rayStack: Int32Array = new Int32Array(64);
+
+/**
  * Dynamic AABB tree. Nodes live in typed arrays (structure of arrays) indexed by node id; a proxy id is
  * the id of its leaf and stays valid until destroyed. Insertion picks the sibling by a perimeter cost
  * (the 2D surface-area heuristic). On the way back up, every ancestor is rebalanced by tree rotations
@@ -58,8 +65,6 @@ export class DynamicTree {
   private freeList = Node.NULL;
   private nodeCount = 0;
   private leafCount = 0;
-  private queryStack: Int32Array = new Int32Array(64);
-  private rayStack: Int32Array = new Int32Array(64);
   private buildLeaves: Int32Array = new Int32Array(0);
   /** rebuild's scratch: each leaf's doubled centre (x, y) by node id */
   private centre: Float64Array = new Float64Array(0);
@@ -248,8 +253,8 @@ export class DynamicTree {
     const minY = boxes[at + 1];
     const maxX = boxes[at + 2];
     const maxY = boxes[at + 3];
-    const stack = this.stackFor(this.queryStack);
-    this.queryStack = stack;
+    const stack = this.stackFor(queryStack);
+    queryStack = stack;
     const box = this.box;
     const child1 = this.child1;
     const child2 = this.child2;
@@ -283,8 +288,8 @@ export class DynamicTree {
     visitor: TreeRayCastVisitor,
   ): number {
     if (this.root === Node.NULL) return maxFraction;
-    const stack = this.stackFor(this.rayStack);
-    this.rayStack = stack;
+    const stack = this.stackFor(rayStack);
+    rayStack = stack;
     // Separating axis perpendicular to the segment: |n·(origin - center)| > |n|·halfExtents culls a box.
     const nx = -translationY;
     const ny = translationX;

@@ -55,6 +55,11 @@ import {
  * does not have (handles, joints) from the classes below; stepping it is bit-identical to stepping
  * the original.
  *
+ * The bytes depend on the world's history of steps and changes only: queries, shape tests, event
+ * reads and debug drawing between steps keep their scratch outside the world (module scratch of the
+ * query, tree and shape code), so that two peers with the same history compare snapshots byte for
+ * byte (test/world/snapshot.test.ts runs a battery of them between steps).
+ *
  * Bytes (little-endian):
  *   0   4  magic "FLCS"
  *   4   2  format version (SNAPSHOT_VERSION)
@@ -66,7 +71,9 @@ import {
  *   20  …  payload: the World object as one value of snapshot-codec.ts
  *
  * Not kept: event handlers (`world.on`); the sleep and wake events of the last step in `world.events`
- * (the contact, sensor and hit events are engine buffers: the restored world reads the same); `userData` (of bodies, shapes and joints) unless it is plain data (numbers,
+ * (the contact, sensor and hit events are engine buffers: the restored world reads the same, less
+ * those naming a shape destroyed between that step and the snapshot, which it has no handle for);
+ * `userData` (of bodies, shapes and joints) unless it is plain data (numbers,
  * strings, booleans, null, plain objects and arrays, typed arrays, Map, Set of those): anything else,
  * e.g. a class instance or a function, becomes `undefined`. Functions held by engine objects are not
  * data: the fresh world's own are kept.

@@ -106,9 +106,10 @@ export function integrateVelocities(
  * Position update of one substep: accumulates the translation of the centre of mass and the rotation
  * since the step began. The rotation is a (cos, sin) pair turned by the angle h w; it is renormalised
  * only in the step's `last` substep, whose relax pass and finalizeBodies need the exact rotation.
- * A dynamic body's velocity is clamped to the limits again first: constraints that cannot all hold
- * (a network of joints locked against itself) can leave the solver with any velocity, and a body
- * moved by it would leave the finite numbers within a few steps.
+ * The velocity is clamped to the limits first. A dynamic body's again: constraints that cannot all
+ * hold (a network of joints locked against itself) can leave the solver with any velocity, and a body
+ * moved by it would leave the finite numbers within a few steps. A kinematic body's as set by the
+ * user: the turn below is exact only up to a quarter turn, and no body outruns the speed limit.
  */
 export function integratePositions(
   bodies: BodyStore,
@@ -119,12 +120,11 @@ export function integratePositions(
   last: boolean,
 ): void {
   const state = bodies.state;
-  const kind = bodies.kind;
   const maxW = MAX_ROTATION_PER_SUBSTEP / h;
   for (let i = 0, n = awakeCount & IndexBound.MAX; i < n; i++) {
     const b = awake[i] & IndexBound.MAX;
     const s = b * S.STRIDE;
-    if (kind[b] === BodyKind.DYNAMIC) clampVelocity(state, s, maxLinearSpeed, maxW);
+    clampVelocity(state, s, maxLinearSpeed, maxW);
     const vx = state[s + S.VX];
     const vy = state[s + S.VY];
     const w = state[s + S.W];

@@ -1,4 +1,13 @@
-import { checkBoolean, checkFinite, checkNonNegative, checkVec2, FulcrumError, fail } from '../core/errors';
+import { checkBoolean, FulcrumError, fail } from '../core/errors';
+import {
+  checkAngle,
+  checkCoordinates,
+  checkForce,
+  checkNonNegativeRate,
+  checkRate,
+  checkVector,
+  Limits,
+} from '../core/limits';
 import type { Geometry } from '../geometry/types';
 import { makeRotInto, rotAngle } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
@@ -175,7 +184,7 @@ export class Body {
 
   setPosition(position: Vec2): void {
     const b = this.unlocked();
-    const p = checkVec2('position', position);
+    const p = checkCoordinates('position', position);
     this.world.core.bodies.px[b] = p.x;
     this.world.core.bodies.py[b] = p.y;
     this.moved(b);
@@ -183,7 +192,7 @@ export class Body {
 
   setAngle(angle: number): void {
     const b = this.unlocked();
-    const a = checkFinite('angle', angle);
+    const a = checkAngle('angle', angle);
     makeRotInto(a, rotScratch);
     this.world.core.bodies.qc[b] = rotScratch.c;
     this.world.core.bodies.qs[b] = rotScratch.s;
@@ -192,8 +201,8 @@ export class Body {
 
   setTransform(position: Vec2, angle: number): void {
     const b = this.unlocked();
-    const p = checkVec2('position', position);
-    const a = checkFinite('angle', angle);
+    const p = checkCoordinates('position', position);
+    const a = checkAngle('angle', angle);
     const bodies = this.world.core.bodies;
     makeRotInto(a, rotScratch);
     bodies.px[b] = p.x;
@@ -213,7 +222,7 @@ export class Body {
 
   setLinearVelocity(velocity: Vec2): void {
     const b = this.unlocked();
-    const v = checkVec2('velocity', velocity);
+    const v = checkVector('velocity', velocity, Limits.RATE);
     const core = this.world.core;
     if (core.bodies.kind[b] === BodyKind.STATIC) return;
     const s = b * S.STRIDE;
@@ -224,7 +233,7 @@ export class Body {
 
   setAngularVelocity(omega: number): void {
     const b = this.unlocked();
-    const w = checkFinite('angularVelocity', omega);
+    const w = checkRate('angularVelocity', omega);
     const core = this.world.core;
     if (core.bodies.kind[b] === BodyKind.STATIC) return;
     if ((core.bodies.flags[b] & BodyFlag.FIXED_ROTATION) !== 0 && core.bodies.kind[b] === BodyKind.DYNAMIC)
@@ -242,17 +251,17 @@ export class Body {
 
   setLinearDamping(damping: number): void {
     const b = this.unlocked();
-    this.world.core.bodies.linearDamping[b] = checkNonNegative('linearDamping', damping);
+    this.world.core.bodies.linearDamping[b] = checkNonNegativeRate('linearDamping', damping);
   }
 
   setAngularDamping(damping: number): void {
     const b = this.unlocked();
-    this.world.core.bodies.angularDamping[b] = checkNonNegative('angularDamping', damping);
+    this.world.core.bodies.angularDamping[b] = checkNonNegativeRate('angularDamping', damping);
   }
 
   setGravityScale(scale: number): void {
     const b = this.unlocked();
-    this.world.core.bodies.gravityScale[b] = checkFinite('gravityScale', scale);
+    this.world.core.bodies.gravityScale[b] = checkRate('gravityScale', scale);
     this.world.core.wake(b);
   }
 
@@ -302,10 +311,10 @@ export class Body {
   /** Force in newtons at a world point (default: the centre of mass), until the end of the next step. */
   applyForce(force: Vec2, point?: Vec2): void {
     const b = this.unlocked();
-    const f = checkVec2('force', force);
+    const f = checkVector('force', force, Limits.FORCE);
     const core = this.world.core;
     const bodies = core.bodies;
-    const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkVec2('point', point);
+    const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkCoordinates('point', point);
     if (bodies.kind[b] !== BodyKind.DYNAMIC) return;
     bodies.fx[b] += f.x;
     bodies.fy[b] += f.y;
@@ -315,7 +324,7 @@ export class Body {
 
   applyTorque(torque: number): void {
     const b = this.unlocked();
-    const t = checkFinite('torque', torque);
+    const t = checkForce('torque', torque);
     const core = this.world.core;
     if (core.bodies.kind[b] !== BodyKind.DYNAMIC) return;
     core.bodies.torque[b] += t;
@@ -325,10 +334,10 @@ export class Body {
   /** Impulse in N·s at a world point (default: the centre of mass): changes the velocity at once. */
   applyLinearImpulse(impulse: Vec2, point?: Vec2): void {
     const b = this.unlocked();
-    const i = checkVec2('impulse', impulse);
+    const i = checkVector('impulse', impulse, Limits.FORCE);
     const core = this.world.core;
     const bodies = core.bodies;
-    const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkVec2('point', point);
+    const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkCoordinates('point', point);
     if (bodies.kind[b] !== BodyKind.DYNAMIC) return;
     const s = b * S.STRIDE;
     bodies.state[s + S.VX] += bodies.invMass[b] * i.x;
@@ -339,7 +348,7 @@ export class Body {
 
   applyAngularImpulse(impulse: number): void {
     const b = this.unlocked();
-    const i = checkFinite('impulse', impulse);
+    const i = checkForce('impulse', impulse);
     const core = this.world.core;
     if (core.bodies.kind[b] !== BodyKind.DYNAMIC) return;
     core.bodies.state[b * S.STRIDE + S.W] += core.bodies.invInertia[b] * i;
@@ -348,7 +357,7 @@ export class Body {
 
   getWorldPoint(localPoint: Vec2): Vec2 {
     const b = this.check();
-    const p = checkVec2('localPoint', localPoint);
+    const p = checkCoordinates('localPoint', localPoint);
     const bodies = this.world.core.bodies;
     const c = bodies.qc[b];
     const s = bodies.qs[b];
@@ -357,7 +366,7 @@ export class Body {
 
   getLocalPoint(worldPoint: Vec2): Vec2 {
     const b = this.check();
-    const p = checkVec2('worldPoint', worldPoint);
+    const p = checkCoordinates('worldPoint', worldPoint);
     const bodies = this.world.core.bodies;
     const c = bodies.qc[b];
     const s = bodies.qs[b];
@@ -368,7 +377,7 @@ export class Body {
 
   getWorldVector(localVector: Vec2): Vec2 {
     const b = this.check();
-    const v = checkVec2('localVector', localVector);
+    const v = checkCoordinates('localVector', localVector);
     const bodies = this.world.core.bodies;
     const c = bodies.qc[b];
     const s = bodies.qs[b];
@@ -377,7 +386,7 @@ export class Body {
 
   getLocalVector(worldVector: Vec2): Vec2 {
     const b = this.check();
-    const v = checkVec2('worldVector', worldVector);
+    const v = checkCoordinates('worldVector', worldVector);
     const bodies = this.world.core.bodies;
     const c = bodies.qc[b];
     const s = bodies.qs[b];
@@ -387,7 +396,7 @@ export class Body {
   /** Velocity of a world point attached to the body. */
   getLinearVelocityAt(worldPoint: Vec2): Vec2 {
     const b = this.check();
-    const p = checkVec2('worldPoint', worldPoint);
+    const p = checkCoordinates('worldPoint', worldPoint);
     const bodies = this.world.core.bodies;
     const s = b * S.STRIDE;
     const w = bodies.state[s + S.W];

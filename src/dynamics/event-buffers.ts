@@ -3,9 +3,19 @@ import { growF64 } from '../core/grow';
 import { ContactFlag, type ContactStore } from './contact-store';
 import { ShapeFlag, type ShapeStore } from './shape-store';
 
+/** Numbers per begin in `beginData`: normal x, y, point count, then x, y of up to two points. */
+export const BEGIN_STRIDE = 7;
+/** Numbers per hit in `hitData`: point x, y, normal x, y, approach speed. */
+export const HIT_STRIDE = 5;
+
 /**
  * Events of one step as plain numbers, recorded without allocation while the step runs and turned
  * into objects only after it, for the handlers and the readable arrays.
+ *
+ * When the step ends, `seal` makes the record self-contained before any user code can run: the
+ * begins' normals and points are copied out of the contacts, and each shape named gets its
+ * generation, so that the record still says which shapes the events were about after those shapes
+ * (and their contacts) are destroyed and their slots reused.
  */
 export class EventBuffers {
   /** contact slot, shape A, shape B per begin */
@@ -17,8 +27,15 @@ export class EventBuffers {
   readonly sensorEnd = new IntList();
   /** shape A, shape B per hit; the numbers are in hitData */
   readonly hitShapes = new IntList();
-  /** point x, y, normal x, y, approach speed per hit */
-  hitData = new Float64Array(5 * 16);
+  /** HIT_STRIDE numbers per hit */
+  hitData = new Float64Array(HIT_STRIDE * 16);
+  /** BEGIN_STRIDE numbers per begin, written by seal */
+  beginData = new Float64Array(BEGIN_STRIDE * 16);
+  /**
+   * The generation of each shape named by the lists above, written by seal, in this order: the
+   * begins' (A, B), the ends', the sensor begins', the sensor ends', the hits'.
+   */
+  readonly generations = new IntList();
 
   clear(): void {
     this.contactBegin.clear();
@@ -26,6 +43,7 @@ export class EventBuffers {
     this.sensorBegin.clear();
     this.sensorEnd.clear();
     this.hitShapes.clear();
+    this.generations.clear();
   }
 
   recordBegin(contacts: ContactStore, c: number, shapes: ShapeStore): void {
@@ -58,13 +76,64 @@ export class EventBuffers {
 
   recordHit(a: number, b: number, px: number, py: number, nx: number, ny: number, speed: number): void {
     const i = this.hitShapes.length / 2;
-    if ((i + 1) * 5 > this.hitData.length) this.hitData = growF64(this.hitData, this.hitData.length * 2);
+    if ((i + 1) * HIT_STRIDE > this.hitData.length)
+      this.hitData = growF64(this.hitData, this.hitData.length * 2);
     const d = this.hitData;
-    d[i * 5] = px;
-    d[i * 5 + 1] = py;
-    d[i * 5 + 2] = nx;
-    d[i * 5 + 3] = ny;
-    d[i * 5 + 4] = speed;
+    const k = i * HIT_STRIDE;
+    d[k] = px;
+    d[k + 1] = py;
+    d[k + 2] = nx;
+    d[k + 3] = ny;
+    d[k + 4] = speed;
     this.hitShapes.push2(a, b);
+  }
+
+  /** Called when the step ends, while every shape and contact named is still alive (see the class doc). */
+  seal(contacts: ContactStore, shapes: ShapeStore): void {
+    const begins = this.contactBegin;
+    const count = begins.length / 3;
+    if (count * BEGIN_STRIDE > this.beginData.length) {
+      this.beginData = growF64(
+        this.beginData,
+        Math.max(count, 2 * (this.beginData.length / BEGIN_STRIDE)) * BEGIN_STRIDE,
+      );
+    }
+    const d = this.beginData;
+    for (let i = 0; i < count; i++) {
+      const c = begins.data[i * 3];
+      const k = i * BEGIN_STRIDE;
+      const n = contacts.pointCount[c];
+      d[k] = contacts.normalX[c];
+      d[k + 1] = contacts.normalY[c];
+      d[k + 2] = n;
+      for (let j = 0; j < 2; j++) {
+        d[k + 3 + 2 * j] = j < n ? contacts.pointX[c * 2 + j] : 0;
+        d[k + 4 + 2 * j] = j < n ? contacts.pointY[c * 2 + j] : 0;
+      }
+    }
+    const g = this.generations;
+    g.clear();
+    stampGenerations(g, begins, 3, 1, shapes);
+    stampGenerations(g, this.contactEnd, 2, 0, shapes);
+    stampGenerations(g, this.sensorBegin, 2, 0, shapes);
+    stampGenerations(g, this.sensorEnd, 2, 0, shapes);
+    stampGenerations(g, this.hitShapes, 2, 0, shapes);
+  }
+}
+
+/**
+ * Appends to `out` the generations (as int32) of the shape pairs in `list`, whose records are
+ * `stride` long with the pair at `first`.
+ */
+function stampGenerations(
+  out: IntList,
+  list: IntList,
+  stride: number,
+  first: number,
+  shapes: ShapeStore,
+): void {
+  const generation = shapes.generation;
+  for (let i = first; i < list.length; i += stride) {
+    out.push2(generation[list.data[i]] | 0, generation[list.data[i + 1]] | 0);
   }
 }

@@ -2,6 +2,7 @@ import type { IntList } from '../collision/int-list';
 import { fail } from '../core/errors';
 import type { Vec2 } from '../math/vec2';
 import type { Body } from './body';
+import { BEGIN_STRIDE, HIT_STRIDE } from './event-buffers';
 import type { ShapeHandle } from './shape';
 import type { World } from './world';
 
@@ -87,6 +88,15 @@ const EVENT_NAMES = [
 /**
  * Turns the step's recorded numbers into event objects, lazily: only when a handler listens or the
  * arrays are read. Handlers run after the step, so they may create and destroy bodies.
+ *
+ * The events are a record of the step: from the end of one step to the next, `world.events` returns
+ * the same arrays of the same objects whenever it is read, and handlers receive those objects. They
+ * name the body and shape handles that took part, also when these have been destroyed since (in a
+ * handler or before the arrays were read): such a handle reads `isValid === false`, and a new body
+ * that took over its slot is never named instead. For that, the World calls `settle()` before it
+ * destroys a shape, so that the record is made into objects while its handles still exist.
+ * Sleep and wake that happen between steps (setAwake, setters) are reported with the next step; a
+ * body destroyed before then is left out of them.
  */
 export class EventDispatcher {
   private readonly handlers = new Map<string, Handler[]>();
@@ -123,8 +133,10 @@ export class EventDispatcher {
   /** Called at the end of step(): drops the old arrays and runs the handlers. */
   deliver(): void {
     this.cache = null;
+    const core = this.world.core;
+    core.events.seal(core.contacts, core.shapes);
     // sleep and wake also happen between steps (setAwake, setters): they are taken here and cleared
-    const islands = this.world.core.islands;
+    const islands = core.islands;
     this.sleepEvents = this.bodyEvents(islands.slept);
     this.wakeEvents = this.bodyEvents(islands.woken);
     islands.slept.clear();
@@ -142,6 +154,11 @@ export class EventDispatcher {
     this.run('wake', events.wake);
   }
 
+  /** Makes the record into objects now, while every shape it names still has its handle. */
+  settle(): void {
+    if (this.cache === null) this.current();
+  }
+
   private run(event: string, items: readonly unknown[]): void {
     const list = this.handlers.get(event);
     if (!list || list.length === 0 || items.length === 0) return;
@@ -151,26 +168,32 @@ export class EventDispatcher {
 
   current(): WorldEvents {
     if (this.cache) return this.cache;
-    const world = this.world;
-    const core = world.core;
-    const buf = core.events;
-    const shape = (s: number) => world.shapeHandles[s]!;
+    const handles = this.world.shapeHandles;
+    const buf = this.world.core.events;
+    const gens = buf.generations.data;
+    let g = 0;
+    // the handle of a shape as the record names it, or undefined when it is gone: in a live world
+    // settle() keeps that from happening; a world restored from a snapshot taken after the shape was
+    // destroyed has no handle for it, and such events are left out
+    const shape = (s: number): ShapeHandle | undefined => {
+      const h = handles[s];
+      return h !== undefined && (h.generation | 0) === gens[g++] ? h : undefined;
+    };
     const contactBegin: ContactBeginEvent[] = [];
-    const contacts = core.contacts;
-    for (let i = 0; i < buf.contactBegin.length; i += 3) {
-      const c = buf.contactBegin.data[i];
-      const a = shape(buf.contactBegin.data[i + 1]);
-      const b = shape(buf.contactBegin.data[i + 2]);
+    for (let i = 0, n = buf.contactBegin.length / 3; i < n; i++) {
+      const a = shape(buf.contactBegin.data[i * 3 + 1]);
+      const b = shape(buf.contactBegin.data[i * 3 + 2]);
+      if (a === undefined || b === undefined) continue;
+      const d = buf.beginData;
+      const k = i * BEGIN_STRIDE;
       const points: Vec2[] = [];
-      for (let j = 0; j < contacts.pointCount[c]; j++) {
-        points.push({ x: contacts.pointX[c * 2 + j], y: contacts.pointY[c * 2 + j] });
-      }
+      for (let j = 0; j < d[k + 2]; j++) points.push({ x: d[k + 3 + 2 * j], y: d[k + 4 + 2 * j] });
       contactBegin.push({
         shapeA: a,
         shapeB: b,
         bodyA: a.body,
         bodyB: b.body,
-        normal: { x: contacts.normalX[c], y: contacts.normalY[c] },
+        normal: { x: d[k], y: d[k + 1] },
         points,
       });
     }
@@ -178,14 +201,27 @@ export class EventDispatcher {
     for (let i = 0; i < buf.contactEnd.length; i += 2) {
       const a = shape(buf.contactEnd.data[i]);
       const b = shape(buf.contactEnd.data[i + 1]);
+      if (a === undefined || b === undefined) continue;
       contactEnd.push({ shapeA: a, shapeB: b, bodyA: a.body, bodyB: b.body });
     }
+    const sensors = (list: IntList): SensorEvent[] => {
+      const out: SensorEvent[] = [];
+      for (let i = 0; i < list.length; i += 2) {
+        const sensorShape = shape(list.data[i]);
+        const visitorShape = shape(list.data[i + 1]);
+        if (sensorShape !== undefined && visitorShape !== undefined) out.push({ sensorShape, visitorShape });
+      }
+      return out;
+    };
+    const sensorBegin = sensors(buf.sensorBegin);
+    const sensorEnd = sensors(buf.sensorEnd);
     const contactHit: ContactHitEvent[] = [];
     for (let i = 0; i < buf.hitShapes.length; i += 2) {
       const a = shape(buf.hitShapes.data[i]);
       const b = shape(buf.hitShapes.data[i + 1]);
-      const k = (i / 2) * 5;
+      if (a === undefined || b === undefined) continue;
       const d = buf.hitData;
+      const k = (i / 2) * HIT_STRIDE;
       contactHit.push({
         shapeA: a,
         shapeB: b,
@@ -196,31 +232,27 @@ export class EventDispatcher {
         approachSpeed: d[k + 4],
       });
     }
-    const sensors = (list: IntList): SensorEvent[] => {
-      const out: SensorEvent[] = [];
-      for (let i = 0; i < list.length; i += 2) {
-        out.push({ sensorShape: shape(list.data[i]), visitorShape: shape(list.data[i + 1]) });
-      }
-      return out;
-    };
     this.cache = {
       contactBegin,
       contactEnd,
       contactHit,
-      sensorBegin: sensors(buf.sensorBegin),
-      sensorEnd: sensors(buf.sensorEnd),
+      sensorBegin,
+      sensorEnd,
       sleep: this.sleepEvents,
       wake: this.wakeEvents,
     };
     return this.cache;
   }
 
+  /** Body events from (slot, generation) pairs; a body destroyed since it slept or woke is left out. */
   private bodyEvents(list: IntList): BodyEvent[] {
     const out: BodyEvent[] = [];
-    for (let i = 0; i < list.length; i++) {
+    const bodies = this.world.core.bodies;
+    for (let i = 0; i < list.length; i += 2) {
       const b = list.data[i];
-      // a body destroyed since it slept or woke is left out
-      if (this.world.core.bodies.alive[b] !== 0) out.push({ body: this.world.bodyHandle(b) });
+      if (bodies.alive[b] !== 0 && (bodies.generation[b] | 0) === list.data[i + 1]) {
+        out.push({ body: this.world.bodyHandle(b) });
+      }
     }
     return out;
   }

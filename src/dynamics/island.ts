@@ -13,7 +13,7 @@ export class Islands {
   private minSleep = new Float64Array(0);
   private islandHead: number[] = [];
   private freeIslands: number[] = [];
-  /** bodies put to sleep and woken during the current step, for events */
+  /** bodies put to sleep and woken since the last step's events, as (slot, generation) pairs */
   readonly slept = new IntList();
   readonly woken = new IntList();
 
@@ -89,7 +89,7 @@ export class Islands {
     bodies.state[s + S.VX] = 0;
     bodies.state[s + S.VY] = 0;
     bodies.state[s + S.W] = 0;
-    this.slept.push(b);
+    this.slept.push2(b, bodies.generation[b] | 0);
   }
 
   /** Wakes the body and, if it sleeps in an island, the whole island. */
@@ -117,7 +117,7 @@ export class Islands {
     bodies.sleepTime[b] = 0;
     bodies.sleepIsland[b] = -1;
     bodies.islandNext[b] = -1;
-    this.woken.push(b);
+    this.woken.push2(b, bodies.generation[b] | 0);
   }
 
   /** Removes a body from its sleeping island before it is destroyed or changes type. */

@@ -195,8 +195,10 @@ export function updateContacts(core: WorldCore): void {
       cache[o + MC.TY] = ty;
       cache[o + MC.RC] = rc;
       cache[o + MC.RS] = rs;
-      const nx = manifold.normalX;
-      const ny = manifold.normalY;
+      // collide leaves the normal of a manifold without points as it was, the last one computed by
+      // any world: 0 keeps the snapshot free of it (it is never read)
+      const nx = manifold.pointCount > 0 ? manifold.normalX : 0;
+      const ny = manifold.pointCount > 0 ? manifold.normalY : 0;
       cache[o + MC.NX] = ac * nx + as * ny;
       cache[o + MC.NY] = ac * ny - as * nx;
       for (let j = 0; j < manifold.pointCount; j++) {

@@ -1,15 +1,9 @@
-import {
-  checkBoolean,
-  checkKnownKeys,
-  checkNonNegative,
-  checkVec2,
-  FulcrumError,
-  fail,
-} from '../core/errors';
+import { checkBoolean, checkKnownKeys, FulcrumError, fail } from '../core/errors';
+import { checkCoordinates, checkDensity, checkNonNegativeRate } from '../core/limits';
 import { rayCastGeometry, testPoint } from '../geometry/raycast';
 import { type Geometry, makeRayHit } from '../geometry/types';
 import type { AABB } from '../math/aabb';
-import type { Vec2 } from '../math/vec2';
+import { makeTransform, type Vec2 } from '../math/vec2';
 import type { Body } from './body';
 import { ShapeFlag } from './shape-store';
 
@@ -103,9 +97,9 @@ export function resolveShapeDef(def: ShapeDef | undefined): ResolvedShapeDef {
     flags |= ShapeFlag.HIT_EVENTS;
   }
   return {
-    density: d.density === undefined ? 1 : checkNonNegative('density', d.density),
-    friction: d.friction === undefined ? 0.6 : checkNonNegative('friction', d.friction),
-    restitution: d.restitution === undefined ? 0 : checkNonNegative('restitution', d.restitution),
+    density: d.density === undefined ? 1 : checkDensity('density', d.density),
+    friction: d.friction === undefined ? 0.6 : checkNonNegativeRate('friction', d.friction),
+    restitution: d.restitution === undefined ? 0 : checkNonNegativeRate('restitution', d.restitution),
     flags,
     filter:
       d.filter === undefined
@@ -116,6 +110,8 @@ export function resolveShapeDef(def: ShapeDef | undefined): ResolvedShapeDef {
 }
 
 const hit = makeRayHit();
+/** the body's transform for testPoint and rayCast: not the world's scratch, which a snapshot holds */
+const xf = makeTransform();
 
 /** A shape handle: valid until the shape or its body is destroyed. */
 export class ShapeHandle {
@@ -166,7 +162,7 @@ export class ShapeHandle {
 
   set friction(value: number) {
     const s = this.unlocked();
-    this.body.world.core.shapes.friction[s] = checkNonNegative('friction', value);
+    this.body.world.core.shapes.friction[s] = checkNonNegativeRate('friction', value);
   }
 
   get restitution(): number {
@@ -175,7 +171,7 @@ export class ShapeHandle {
 
   set restitution(value: number) {
     const s = this.unlocked();
-    this.body.world.core.shapes.restitution[s] = checkNonNegative('restitution', value);
+    this.body.world.core.shapes.restitution[s] = checkNonNegativeRate('restitution', value);
   }
 
   get density(): number {
@@ -186,7 +182,7 @@ export class ShapeHandle {
   set density(value: number) {
     const s = this.unlocked();
     const core = this.body.world.core;
-    core.shapes.density[s] = checkNonNegative('density', value);
+    core.shapes.density[s] = checkDensity('density', value);
     core.updateMass(core.shapes.body[s]);
     core.wake(core.shapes.body[s]);
   }
@@ -255,18 +251,18 @@ export class ShapeHandle {
 
   testPoint(point: Vec2): boolean {
     const s = this.check();
-    const p = checkVec2('point', point);
+    const p = checkCoordinates('point', point);
     const core = this.body.world.core;
-    return testPoint(this.geometry, core.fillTransform(core.shapes.body[s], core.xfA), p.x, p.y);
+    return testPoint(this.geometry, core.fillTransform(core.shapes.body[s], xf), p.x, p.y);
   }
 
   /** Ray from `origin` along `translation`; null when it misses (see geometry/raycast.ts for the rules). */
   rayCast(origin: Vec2, translation: Vec2): RayCastResult | null {
     const s = this.check();
-    const o = checkVec2('origin', origin);
-    const t = checkVec2('translation', translation);
+    const o = checkCoordinates('origin', origin);
+    const t = checkCoordinates('translation', translation);
     const core = this.body.world.core;
-    const xf = core.fillTransform(core.shapes.body[s], core.xfA);
+    core.fillTransform(core.shapes.body[s], xf);
     if (!rayCastGeometry(this.geometry, xf, o.x, o.y, t.x, t.y, hit)) return null;
     return {
       point: { x: hit.pointX, y: hit.pointY },

@@ -1,15 +1,22 @@
 import {
   checkBoolean,
-  checkFinite,
   checkInteger,
   checkKnownKeys,
   checkNonNegative,
-  checkPositive,
-  checkVec2,
   FulcrumError,
   fail,
 } from '../core/errors';
 import { IndexBound } from '../core/index-bound';
+import {
+  checkAngle,
+  checkCoordinates,
+  checkNonNegativeRate,
+  checkRange,
+  checkRate,
+  checkVector,
+  checkZeroOrRange,
+  Limits,
+} from '../core/limits';
 import { readSnapshot, writeSnapshot } from '../debug/snapshot';
 import { maxExtentFrom } from '../geometry/extent';
 import { Pack, packGeometry } from '../geometry/packed';
@@ -81,7 +88,8 @@ export class World {
   constructor(def: WorldDef = {}) {
     if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
     checkKnownKeys('def', def, WORLD_DEF_KEYS);
-    const gravity = def.gravity === undefined ? { x: 0, y: -10 } : checkVec2('gravity', def.gravity);
+    const gravity =
+      def.gravity === undefined ? { x: 0, y: -10 } : checkVector('gravity', def.gravity, Limits.RATE);
     const subSteps = def.subSteps === undefined ? 4 : checkInteger('subSteps', def.subSteps, 1, 64);
     const enableSleep = def.enableSleep === undefined ? true : checkBoolean('enableSleep', def.enableSleep);
     const enableContinuous =
@@ -89,7 +97,7 @@ export class World {
     const units =
       def.lengthUnitsPerMeter === undefined
         ? 1
-        : checkPositive('lengthUnitsPerMeter', def.lengthUnitsPerMeter);
+        : checkRange('lengthUnitsPerMeter', def.lengthUnitsPerMeter, Limits.MIN_UNITS, Limits.MAX_UNITS);
     this.core = new WorldCore(units);
     this.core.gravityX = gravity.x;
     this.core.gravityY = gravity.y;
@@ -103,7 +111,7 @@ export class World {
   }
 
   set gravity(value: Vec2) {
-    const g = checkVec2('gravity', value);
+    const g = checkVector('gravity', value, Limits.RATE);
     this.core.gravityX = g.x;
     this.core.gravityY = g.y;
   }
@@ -185,16 +193,18 @@ export class World {
     checkKnownKeys('def', def, BODY_DEF_KEYS);
     const type = def.type ?? 'static';
     if (!BODY_TYPES.includes(type)) fail('type', type, "'static', 'kinematic' or 'dynamic'");
-    const position = def.position === undefined ? { x: 0, y: 0 } : checkVec2('position', def.position);
-    const angle = def.angle === undefined ? 0 : checkFinite('angle', def.angle);
+    const position = def.position === undefined ? { x: 0, y: 0 } : checkCoordinates('position', def.position);
+    const angle = def.angle === undefined ? 0 : checkAngle('angle', def.angle);
     const v =
-      def.linearVelocity === undefined ? { x: 0, y: 0 } : checkVec2('linearVelocity', def.linearVelocity);
-    const w = def.angularVelocity === undefined ? 0 : checkFinite('angularVelocity', def.angularVelocity);
+      def.linearVelocity === undefined
+        ? { x: 0, y: 0 }
+        : checkVector('linearVelocity', def.linearVelocity, Limits.RATE);
+    const w = def.angularVelocity === undefined ? 0 : checkRate('angularVelocity', def.angularVelocity);
     const linearDamping =
-      def.linearDamping === undefined ? 0 : checkNonNegative('linearDamping', def.linearDamping);
+      def.linearDamping === undefined ? 0 : checkNonNegativeRate('linearDamping', def.linearDamping);
     const angularDamping =
-      def.angularDamping === undefined ? 0 : checkNonNegative('angularDamping', def.angularDamping);
-    const gravityScale = def.gravityScale === undefined ? 1 : checkFinite('gravityScale', def.gravityScale);
+      def.angularDamping === undefined ? 0 : checkNonNegativeRate('angularDamping', def.angularDamping);
+    const gravityScale = def.gravityScale === undefined ? 1 : checkRate('gravityScale', def.gravityScale);
     const fixedRotation =
       def.fixedRotation === undefined ? false : checkBoolean('fixedRotation', def.fixedRotation);
     const bullet = def.bullet === undefined ? false : checkBoolean('bullet', def.bullet);
@@ -237,6 +247,7 @@ export class World {
   destroyBody(body: Body): void {
     this.checkUnlocked();
     const b = this.checkBody('body', body);
+    this.dispatcher.settle();
     const core = this.core;
     for (const joint of core.bodyJoints[b]?.slice() ?? []) this.removeJoint(joint);
     core.bodyJoints[b] = undefined;
@@ -384,6 +395,7 @@ export class World {
     const b = body.check();
     if (!(shape instanceof ShapeHandle) || shape.body !== body) fail('shape', shape, 'a shape of this body');
     const s = shape.check();
+    this.dispatcher.settle();
     const core = this.core;
     core.destroyShapeContacts(s, true);
     core.destroyProxy(s);
@@ -478,7 +490,7 @@ export class World {
   /** Advances the world by `dt` seconds (use a fixed step such as 1/60). */
   step(dt: number): void {
     this.checkUnlocked();
-    checkNonNegative('dt', dt);
+    checkZeroOrRange('dt', dt, Limits.MIN_DT, Limits.MAX_DT);
     const core = this.core;
     this.dispatcher.emitStep('preStep', dt);
     core.locked = true;

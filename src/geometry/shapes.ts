@@ -1,4 +1,5 @@
-import { checkFinite, checkNonNegative, checkPositive, checkVec2, fail } from '../core/errors';
+import { fail } from '../core/errors';
+import { checkAngle, checkCoordinates, checkRange, checkSize, Limits } from '../core/limits';
 import { makeRot } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
 import { LINEAR_SLOP } from './constants';
@@ -10,7 +11,7 @@ function frozenPoint(x: number, y: number): Vec2 {
 }
 
 function optionalPoint(argument: string, value: unknown): Vec2 {
-  return value === undefined ? frozenPoint(0, 0) : Object.freeze(checkVec2(argument, value));
+  return value === undefined ? frozenPoint(0, 0) : Object.freeze(checkCoordinates(argument, value));
 }
 
 /** Builds the frozen polygon from counter-clockwise hull vertices: edge normals and area centroid. */
@@ -66,7 +67,7 @@ function checkApart(p1: Vec2, p2: Vec2, value: unknown): void {
 /** Factories of immutable geometry in a body's local frame. Every argument is validated. */
 export const Shape = {
   circle(radius: number, center?: Vec2): Circle {
-    checkPositive('radius', radius);
+    checkSize('radius', radius);
     return Object.freeze({
       type: 'circle',
       kind: ShapeKind.CIRCLE,
@@ -77,10 +78,10 @@ export const Shape = {
 
   /** A rectangle with half extents, centred on `center`, rotated by `angle` radians. */
   box(halfWidth: number, halfHeight: number, center?: Vec2, angle?: number): Polygon {
-    checkPositive('halfWidth', halfWidth);
-    checkPositive('halfHeight', halfHeight);
+    checkSize('halfWidth', halfWidth);
+    checkSize('halfHeight', halfHeight);
     const c = optionalPoint('center', center);
-    const q = makeRot(angle === undefined ? 0 : checkFinite('angle', angle));
+    const q = makeRot(angle === undefined ? 0 : checkAngle('angle', angle));
     const corners = [
       [-halfWidth, -halfHeight],
       [halfWidth, -halfHeight],
@@ -93,17 +94,19 @@ export const Shape = {
 
   /** Convex hull of `points`; `radius` rounds the corners (the surface is the hull inflated by radius). */
   polygon(points: readonly Vec2[], radius?: number): Polygon {
-    const r = radius === undefined ? 0 : checkNonNegative('radius', radius);
+    const r = radius === undefined ? 0 : checkRange('radius', radius, 0, Limits.COORDINATE);
     if (!Array.isArray(points)) fail('points', points, 'an array of at least 3 vectors { x, y }');
-    const checked = points.map((p, i) => checkVec2(`points[${i}]`, p));
+    // by index, not map(): map skips the holes of a sparse array
+    const checked: Vec2[] = [];
+    for (let i = 0; i < points.length; i++) checked.push(checkCoordinates(`points[${i}]`, points[i]));
     return makePolygon(computeHull(checked, 'points'), r);
   },
 
   /** The set of points within `radius` of the segment p1-p2. */
   capsule(p1: Vec2, p2: Vec2, radius: number): Capsule {
-    const a = checkVec2('p1', p1);
-    const b = checkVec2('p2', p2);
-    checkPositive('radius', radius);
+    const a = checkCoordinates('p1', p1);
+    const b = checkCoordinates('p2', p2);
+    checkSize('radius', radius);
     checkApart(a, b, p2);
     return Object.freeze({
       type: 'capsule',
@@ -116,8 +119,8 @@ export const Shape = {
 
   /** A two-sided segment without thickness (static or kinematic bodies only). */
   segment(p1: Vec2, p2: Vec2): Segment {
-    const a = checkVec2('p1', p1);
-    const b = checkVec2('p2', p2);
+    const a = checkCoordinates('p1', p1);
+    const b = checkCoordinates('p2', p2);
     checkApart(a, b, p2);
     return Object.freeze({
       type: 'segment',

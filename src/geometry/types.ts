@@ -1,3 +1,4 @@
+import { Limits } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 
 /** Largest vertex count of a convex polygon. */
@@ -114,23 +115,38 @@ const KIND_OF_TYPE: Record<string, number> = {
   polygon: ShapeKind.POLYGON,
 };
 
+/** How far from the body's origin a vertex of Shape's may lie: a box of the largest size and offset, turned. */
+const VERTEX_BOUND = 4 * Limits.COORDINATE;
+
 function isFinitePoint(p: unknown): boolean {
   if (typeof p !== 'object' || p === null) return false;
   const v = p as { x?: unknown; y?: unknown };
-  return Number.isFinite(v.x) && Number.isFinite(v.y);
+  return (
+    typeof v.x === 'number' &&
+    typeof v.y === 'number' &&
+    Math.abs(v.x) <= VERTEX_BOUND &&
+    Math.abs(v.y) <= VERTEX_BOUND
+  );
 }
 
 function isPointList(list: unknown, count: number): boolean {
   return Array.isArray(list) && list.length === count && list.every(isFinitePoint);
 }
 
+function isUnitList(list: unknown, count: number): boolean {
+  return (
+    isPointList(list, count) && (list as Vec2[]).every((n) => Math.abs(n.x * n.x + n.y * n.y - 1) <= 1e-9)
+  );
+}
+
 function isLength(value: unknown, min: number): boolean {
-  return typeof value === 'number' && Number.isFinite(value) && value >= min;
+  return typeof value === 'number' && value >= min && value <= Limits.COORDINATE;
 }
 
 /**
- * True for geometry as `Shape.*` builds it: frozen, with a matching type and kind, finite coordinates
- * and at most MAX_POLYGON_VERTICES vertices. The shape store packs it into a fixed-size record, so a
+ * True for geometry as `Shape.*` builds it: frozen, with a matching type and kind, coordinates and
+ * sizes in the ranges Shape accepts (core/limits.ts), unit normals and at most MAX_POLYGON_VERTICES
+ * vertices. The shape store packs it into a fixed-size record, so a
  * hand-made object that passed on type alone could write past it or bring NaN into the world.
  */
 export function isGeometry(value: unknown): value is Geometry {
@@ -139,9 +155,9 @@ export function isGeometry(value: unknown): value is Geometry {
   if (typeof g.type !== 'string' || KIND_OF_TYPE[g.type] !== g.kind) return false;
   switch (g.kind) {
     case ShapeKind.CIRCLE:
-      return isFinitePoint(g.center) && isLength(g.radius, Number.MIN_VALUE);
+      return isFinitePoint(g.center) && isLength(g.radius, Limits.MIN_SIZE);
     case ShapeKind.CAPSULE:
-      return isFinitePoint(g.center1) && isFinitePoint(g.center2) && isLength(g.radius, Number.MIN_VALUE);
+      return isFinitePoint(g.center1) && isFinitePoint(g.center2) && isLength(g.radius, Limits.MIN_SIZE);
     case ShapeKind.SEGMENT:
       return isFinitePoint(g.point1) && isFinitePoint(g.point2);
     default: {
@@ -152,7 +168,7 @@ export function isGeometry(value: unknown): value is Geometry {
         count >= 3 &&
         count <= MAX_POLYGON_VERTICES &&
         isPointList(g.vertices, count) &&
-        isPointList(g.normals, count) &&
+        isUnitList(g.normals, count) &&
         isFinitePoint(g.centroid) &&
         isLength(g.radius, 0)
       );

@@ -1,4 +1,5 @@
 import { checkKnownKeys, FulcrumError, fail } from '../core/errors';
+import { checkAngle, Limits } from '../core/limits';
 import { type Geometry, isGeometry } from '../geometry/types';
 import { makeRotInto } from '../math/rot';
 import type { Rot, Transform, Vec2 } from '../math/vec2';
@@ -16,12 +17,20 @@ function isFiniteNumber(value: unknown): value is number {
   return typeof value === 'number' && Number.isFinite(value);
 }
 
-/** Validates a vector without copying it: returns it typed, so callers read x and y once. */
+/**
+ * Validates a point or translation (components within Limits.COORDINATE) without copying it: returns
+ * it typed, so callers read x and y once.
+ */
 export function checkPoint(argument: string, value: unknown): Vec2 {
   if (typeof value !== 'object' || value === null) fail(argument, value, 'a vector { x, y }');
   const v = value as { x: unknown; y: unknown };
-  if (!isFiniteNumber(v.x) || !isFiniteNumber(v.y))
-    fail(argument, value, 'a vector { x, y } of finite numbers');
+  const bound = Limits.COORDINATE;
+  if (
+    typeof v.x !== 'number' ||
+    typeof v.y !== 'number' ||
+    !(Math.abs(v.x) <= bound && Math.abs(v.y) <= bound)
+  )
+    fail(argument, value, `a vector { x, y } of numbers in [-${bound}, ${bound}]`);
   return value as Vec2;
 }
 
@@ -40,8 +49,7 @@ export function resolveTransform(argument: string, value: unknown, out: Transfor
     checkKnownKeys(argument, value, POSE_KEYS);
     const t = value as { position: unknown; angle?: unknown };
     const p = checkPoint(`${argument}.position`, t.position);
-    if (t.angle !== undefined && !isFiniteNumber(t.angle))
-      fail(`${argument}.angle`, t.angle, 'a finite number');
+    if (t.angle !== undefined) checkAngle(`${argument}.angle`, t.angle);
     const x = p.x;
     const y = p.y;
     makeRotInto(t.angle === undefined ? 0 : (t.angle as number), out.q);

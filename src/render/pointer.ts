@@ -1,3 +1,4 @@
+import { Limits } from '../core/limits';
 import type { Body } from '../dynamics/body';
 import type { MouseJoint } from '../dynamics/joints/mouse-joint';
 import type { World } from '../dynamics/world';
@@ -188,7 +189,8 @@ export class Pointer {
       type: 'mouse',
       body,
       target: point,
-      maxForce: this.forcePerMass * body.mass * (g / 10),
+      // held to the accepted range: a heavy body under strong gravity would ask for more
+      maxForce: Math.min(Limits.FORCE, this.forcePerMass * body.mass * (g / 10)),
       hertz: this.hertz,
       dampingRatio: this.dampingRatio,
     });

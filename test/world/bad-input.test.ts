@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { FulcrumError, Shape, stateHash, World } from '../../src/index';
+import { FulcrumError, Shape, World } from '../../src/index';
+import { expectRejected } from '../helpers/rejects';
 
 function sampleWorld() {
   const world = new World();
@@ -11,21 +12,7 @@ function sampleWorld() {
   return { world, ground, box, shape };
 }
 
-/** Asserts that `f` throws a FulcrumError whose message names `argument`, and that the world is unchanged. */
-function rejects(world: World, f: () => unknown, argument: string | RegExp) {
-  const hash = stateHash(world);
-  const count = world.bodyCount;
-  let error: unknown;
-  try {
-    f();
-  } catch (e) {
-    error = e;
-  }
-  expect(error).toBeInstanceOf(FulcrumError);
-  expect((error as Error).message).toMatch(argument);
-  expect(stateHash(world)).toBe(hash);
-  expect(world.bodyCount).toBe(count);
-}
+const rejects = expectRejected;
 
 describe('bad input', () => {
   it('world definitions', () => {

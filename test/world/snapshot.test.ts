@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { drawWorld } from '../../src/debug/debug-draw';
 import { type Body, FulcrumError, Shape, stateHash, World } from '../../src/index';
 
 const DT = 1 / 60;
@@ -195,7 +196,126 @@ function stepped(steps: number): { world: World; bodies: Body[] } {
   return scene;
 }
 
+/** Bytes equal, with the first differing offset in the message when they are not. */
+function expectSameBytes(a: Uint8Array, b: Uint8Array, what: string): void {
+  let first = -1;
+  for (let i = 0; i < Math.min(a.length, b.length); i++) {
+    if (a[i] !== b[i]) {
+      first = i;
+      break;
+    }
+  }
+  expect({ lengths: [a.length, b.length], firstDifference: first }, what).toEqual({
+    lengths: [a.length, a.length],
+    firstDifference: -1,
+  });
+}
+
+/**
+ * Everything a user may ask of a world between steps without changing it: every query (sensors
+ * included, hits and misses, casts that start inside), the shapes' own tests, reads of events,
+ * joints and bodies, and a debug drawing of everything.
+ */
+function readEverything(world: World): void {
+  const sensors = { includeSensors: true };
+  world.castRay({ x: -40, y: 5 }, { x: 80, y: -4 });
+  world.castRay({ x: 4, y: 1 }, { x: 0, y: -3 }, sensors);
+  world.castRayAll({ x: -40, y: 0.5 }, { x: 80, y: 0.2 }, sensors);
+  world.castRayAll({ x: 14, y: 30 }, { x: 0.3, y: -40 });
+  world.queryAABB({ lowerBound: { x: -20, y: -2 }, upperBound: { x: 30, y: 15 } });
+  world.queryPoint({ x: 4, y: 1 });
+  world.castShape(Shape.circle(0.3), { position: { x: -20, y: 3 }, angle: 0.2 }, { x: 40, y: -2 });
+  world.castShape(Shape.box(0.4, 0.2), { position: { x: -10, y: 0.5 } }, { x: 1, y: 0 }, sensors);
+  world.overlapShape(Shape.box(6, 3), { position: { x: 3, y: 3 } });
+  world.overlapShape(Shape.capsule({ x: -1, y: 0 }, { x: 1, y: 0 }, 0.2), {
+    p: { x: 14, y: 12 },
+    q: { c: 0, s: 1 },
+  });
+  for (const body of world.bodies) {
+    body.getLinearVelocityAt({ x: 1, y: 2 });
+    for (const shape of body.shapes) {
+      shape.testPoint({ x: 0, y: 0 });
+      shape.rayCast({ x: -50, y: 1 }, { x: 100, y: 2 });
+      shape.getAABB();
+    }
+  }
+  for (const joint of world.joints) {
+    joint.getReactionForce();
+    joint.getReactionTorque();
+  }
+  const events = world.events;
+  expect(events).toBeDefined();
+  const none = () => {};
+  const draw = {
+    drawPolygon: none,
+    drawCircle: none,
+    drawCapsule: none,
+    drawLine: none,
+    drawPoint: none,
+    drawAABB: none,
+    drawTransform: none,
+  };
+  drawWorld(world, draw, {
+    shapes: true,
+    wireframe: false,
+    joints: true,
+    aabbs: true,
+    contacts: true,
+    contactNormals: true,
+    velocities: true,
+    centersOfMass: true,
+    sleeping: true,
+  });
+}
+
 describe('world snapshots', () => {
+  it('queries, shape tests, event reads and debug drawing between steps leave the snapshot bytes as they were', () => {
+    const plain = mixedScene().world;
+    const queried = mixedScene().world;
+    for (let i = 0; i < 90; i++) {
+      plain.step(DT);
+      queried.step(DT);
+      readEverything(queried);
+      if (i % 30 === 29) expectSameBytes(queried.snapshot(), plain.snapshot(), `after step ${i + 1}`);
+    }
+    // restoring either gives the same future, also when only one of them is queried on
+    const fromPlain = World.restore(plain.snapshot());
+    const fromQueried = World.restore(queried.snapshot());
+    for (let i = 0; i < 120; i++) {
+      fromPlain.step(DT);
+      fromQueried.step(DT);
+      readEverything(fromQueried);
+      expect(stateHash(fromQueried), `step ${i + 1}`).toBe(stateHash(fromPlain));
+    }
+    expectSameBytes(fromQueried.snapshot(), fromPlain.snapshot(), 'restored copies');
+  });
+
+  it('a snapshot does not depend on another world stepping in between (no stale normal of a manifold without points)', () => {
+    // two circles near enough for their tight boxes to overlap, too far for a contact point: the
+    // manifold is computed and has no points
+    const circles = () => {
+      const world = new World({ gravity: { x: 0, y: 0 } });
+      world.createBody({ type: 'dynamic' }).createShape(Shape.circle(0.5));
+      world.createBody({ type: 'dynamic', position: { x: 0.75, y: 0.75 } }).createShape(Shape.circle(0.5));
+      return world;
+    };
+    // a tilted box resting on a tilted plank: its manifolds have normals far from the axes
+    const other = new World();
+    other.createBody().createShape(Shape.box(5, 0.5, { x: 0, y: 0 }, 0.6435));
+    other
+      .createBody({ type: 'dynamic', position: { x: 0, y: 1.2 } })
+      .createShape(Shape.box(0.5, 0.5, { x: 0, y: 0 }, 0.6435));
+    const alone = circles();
+    for (let i = 0; i < 3; i++) alone.step(DT);
+    const interleaved = circles();
+    for (let i = 0; i < 3; i++) {
+      other.step(DT);
+      interleaved.step(DT);
+    }
+    expect(alone.contactCount).toBe(1);
+    expectSameBytes(interleaved.snapshot(), alone.snapshot(), 'circles');
+  });
+
   it('a restored world steps bit-identically to the original', () => {
     const { world, bodies } = stepped(120);
     // pending forces are state too

@@ -1,12 +1,14 @@
+import { checkBoolean, checkKnownKeys, FulcrumError, fail } from '../../core/errors';
 import {
-  checkBoolean,
-  checkFinite,
-  checkKnownKeys,
-  checkNonNegative,
-  checkVec2,
-  FulcrumError,
-  fail,
-} from '../../core/errors';
+  checkAngle,
+  checkCoordinate,
+  checkCoordinates,
+  checkLength,
+  checkNonNegativeForce,
+  checkNonNegativeRate,
+  checkRange,
+  checkRate,
+} from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import type { World } from '../world';
@@ -169,11 +171,14 @@ const KEYS: Record<string, readonly string[]> = {
 function bool(name: string, value: unknown, fallback: boolean): boolean {
   return value === undefined ? fallback : checkBoolean(name, value);
 }
-function num(name: string, value: unknown, fallback: number): number {
-  return value === undefined ? fallback : checkFinite(name, value);
-}
-function nonNegative(name: string, value: unknown, fallback: number): number {
-  return value === undefined ? fallback : checkNonNegative(name, value);
+/** `check` applied to `value`, or `fallback` when it is not given (core/limits.ts has the ranges) */
+function opt(
+  check: (name: string, value: unknown) => number,
+  name: string,
+  value: unknown,
+  fallback: number,
+): number {
+  return value === undefined ? fallback : check(name, value);
 }
 
 /** Anchors in both bodies' frames from a world `anchor` or from local anchors (default: origins). */
@@ -182,17 +187,30 @@ function anchors(def: AnchorDef, a: Body, b: Body): { la: Vec2; lb: Vec2 } {
     if (def.localAnchorA !== undefined || def.localAnchorB !== undefined) {
       throw new FulcrumError('anchor: give either anchor or localAnchorA/localAnchorB, not both');
     }
-    const p = checkVec2('anchor', def.anchor);
+    const p = checkCoordinates('anchor', def.anchor);
     return { la: a.getLocalPoint(p), lb: b.getLocalPoint(p) };
   }
   return {
-    la: def.localAnchorA === undefined ? { x: 0, y: 0 } : checkVec2('localAnchorA', def.localAnchorA),
-    lb: def.localAnchorB === undefined ? { x: 0, y: 0 } : checkVec2('localAnchorB', def.localAnchorB),
+    la: def.localAnchorA === undefined ? { x: 0, y: 0 } : checkCoordinates('localAnchorA', def.localAnchorA),
+    lb: def.localAnchorB === undefined ? { x: 0, y: 0 } : checkCoordinates('localAnchorB', def.localAnchorB),
   };
 }
 
+/** `p` in `body`'s frame, unchecked: B's centre may lie beyond the range getLocalPoint accepts */
+function localPointOf(body: Body, p: Vec2): Vec2 {
+  const q = body.rotation;
+  const o = body.position;
+  const dx = p.x - o.x;
+  const dy = p.y - o.y;
+  return { x: q.c * dx + q.s * dy, y: -q.s * dx + q.c * dy };
+}
+
+function checkFraction(name: string, value: unknown): number {
+  return checkRange(name, value, 0, 1);
+}
+
 function unitAxis(value: unknown): Vec2 {
-  const v = checkVec2('axis', value);
+  const v = checkCoordinates('axis', value);
   const len = Math.sqrt(v.x * v.x + v.y * v.y);
   if (len < 1e-9) fail('axis', value, 'a non-zero vector');
   return { x: v.x / len, y: v.y / len };
@@ -216,14 +234,14 @@ export function buildJoint(world: World, def: JointDef): Joint {
   if (def.type === 'mouse') {
     world.checkBody('body', def.body);
     const body = def.body;
-    const target = checkVec2('target', def.target);
+    const target = checkCoordinates('target', def.target);
     const mass = body.mass;
     return new MouseJoint(world, body, body.getLocalPoint(target), def.userData, {
       targetX: target.x,
       targetY: target.y,
-      maxForce: nonNegative('maxForce', def.maxForce, 1000 * Math.max(mass, 1)),
-      hertz: nonNegative('hertz', def.hertz, 5),
-      dampingRatio: nonNegative('dampingRatio', def.dampingRatio, 0.7),
+      maxForce: opt(checkNonNegativeForce, 'maxForce', def.maxForce, 1000 * Math.max(mass, 1)),
+      hertz: opt(checkNonNegativeRate, 'hertz', def.hertz, 5),
+      dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 0.7),
     });
   }
   world.checkBody('bodyA', def.bodyA);
@@ -240,52 +258,52 @@ export function buildJoint(world: World, def: JointDef): Joint {
   switch (def.type) {
     case 'distance': {
       const la =
-        def.localAnchorA === undefined ? { x: 0, y: 0 } : checkVec2('localAnchorA', def.localAnchorA);
+        def.localAnchorA === undefined ? { x: 0, y: 0 } : checkCoordinates('localAnchorA', def.localAnchorA);
       const lb =
-        def.localAnchorB === undefined ? { x: 0, y: 0 } : checkVec2('localAnchorB', def.localAnchorB);
+        def.localAnchorB === undefined ? { x: 0, y: 0 } : checkCoordinates('localAnchorB', def.localAnchorB);
       const pa = a.getWorldPoint(la);
       const pb = b.getWorldPoint(lb);
       const current = Math.sqrt((pb.x - pa.x) * (pb.x - pa.x) + (pb.y - pa.y) * (pb.y - pa.y));
-      const length = nonNegative('length', def.length, current);
-      const minLength = nonNegative('minLength', def.minLength, 0);
+      const length = opt(checkLength, 'length', def.length, current);
+      const minLength = opt(checkLength, 'minLength', def.minLength, 0);
       const maxLength =
         def.maxLength === undefined || def.maxLength === Number.POSITIVE_INFINITY
           ? Number.POSITIVE_INFINITY
-          : checkNonNegative('maxLength', def.maxLength);
+          : checkLength('maxLength', def.maxLength);
       limits('minLength', minLength, 'maxLength', maxLength);
       return new DistanceJoint(world, a, b, la, lb, collide, def.userData, {
         length,
         minLength,
         maxLength,
         enableSpring: bool('enableSpring', def.enableSpring, false),
-        hertz: nonNegative('hertz', def.hertz, 0),
-        dampingRatio: nonNegative('dampingRatio', def.dampingRatio, 0),
+        hertz: opt(checkNonNegativeRate, 'hertz', def.hertz, 0),
+        dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 0),
       });
     }
     case 'revolute': {
       const { la, lb } = anchors(def, a, b);
-      const lowerAngle = num('lowerAngle', def.lowerAngle, 0);
-      const upperAngle = num('upperAngle', def.upperAngle, 0);
+      const lowerAngle = opt(checkAngle, 'lowerAngle', def.lowerAngle, 0);
+      const upperAngle = opt(checkAngle, 'upperAngle', def.upperAngle, 0);
       limits('lowerAngle', lowerAngle, 'upperAngle', upperAngle);
       return new RevoluteJoint(world, a, b, la, lb, collide, def.userData, {
-        referenceAngle: num('referenceAngle', def.referenceAngle, currentAngle()),
+        referenceAngle: opt(checkAngle, 'referenceAngle', def.referenceAngle, currentAngle()),
         enableLimit: bool('enableLimit', def.enableLimit, false),
         lowerAngle,
         upperAngle,
         enableMotor: bool('enableMotor', def.enableMotor, false),
-        motorSpeed: num('motorSpeed', def.motorSpeed, 0),
-        maxMotorTorque: nonNegative('maxMotorTorque', def.maxMotorTorque, 0),
+        motorSpeed: opt(checkRate, 'motorSpeed', def.motorSpeed, 0),
+        maxMotorTorque: opt(checkNonNegativeForce, 'maxMotorTorque', def.maxMotorTorque, 0),
         enableSpring: bool('enableSpring', def.enableSpring, false),
-        hertz: nonNegative('hertz', def.hertz, 0),
-        dampingRatio: nonNegative('dampingRatio', def.dampingRatio, 0),
+        hertz: opt(checkNonNegativeRate, 'hertz', def.hertz, 0),
+        dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 0),
       });
     }
     case 'prismatic':
     case 'wheel': {
       const { la, lb } = anchors(def, a, b);
       const axis = a.getLocalVector(unitAxis(def.axis));
-      const lower = num('lower', def.lower, 0);
-      const upper = num('upper', def.upper, 0);
+      const lower = opt(checkCoordinate, 'lower', def.lower, 0);
+      const upper = opt(checkCoordinate, 'upper', def.upper, 0);
       limits('lower', lower, 'upper', upper);
       const wheel = def.type === 'wheel';
       const slider = {
@@ -295,44 +313,44 @@ export function buildJoint(world: World, def: JointDef): Joint {
         lower,
         upper,
         enableSpring: bool('enableSpring', def.enableSpring, wheel),
-        hertz: nonNegative('hertz', def.hertz, wheel ? 1 : 0),
-        dampingRatio: nonNegative('dampingRatio', def.dampingRatio, wheel ? 0.7 : 0),
+        hertz: opt(checkNonNegativeRate, 'hertz', def.hertz, wheel ? 1 : 0),
+        dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, wheel ? 0.7 : 0),
       };
       if (def.type === 'wheel') {
         return new WheelJoint(world, a, b, la, lb, collide, def.userData, slider, {
           enableMotor: bool('enableMotor', def.enableMotor, false),
-          motorSpeed: num('motorSpeed', def.motorSpeed, 0),
-          maxMotorTorque: nonNegative('maxMotorTorque', def.maxMotorTorque, 0),
+          motorSpeed: opt(checkRate, 'motorSpeed', def.motorSpeed, 0),
+          maxMotorTorque: opt(checkNonNegativeForce, 'maxMotorTorque', def.maxMotorTorque, 0),
         });
       }
       return new PrismaticJoint(world, a, b, la, lb, collide, def.userData, slider, {
-        referenceAngle: num('referenceAngle', def.referenceAngle, currentAngle()),
+        referenceAngle: opt(checkAngle, 'referenceAngle', def.referenceAngle, currentAngle()),
         enableMotor: bool('enableMotor', def.enableMotor, false),
-        motorSpeed: num('motorSpeed', def.motorSpeed, 0),
-        maxMotorForce: nonNegative('maxMotorForce', def.maxMotorForce, 0),
+        motorSpeed: opt(checkRate, 'motorSpeed', def.motorSpeed, 0),
+        maxMotorForce: opt(checkNonNegativeForce, 'maxMotorForce', def.maxMotorForce, 0),
       });
     }
     case 'weld': {
       const { la, lb } = anchors(def, a, b);
       return new WeldJoint(world, a, b, la, lb, collide, def.userData, {
-        referenceAngle: num('referenceAngle', def.referenceAngle, currentAngle()),
-        linearHertz: nonNegative('linearHertz', def.linearHertz, 0),
-        angularHertz: nonNegative('angularHertz', def.angularHertz, 0),
-        dampingRatio: nonNegative('dampingRatio', def.dampingRatio, 1),
+        referenceAngle: opt(checkAngle, 'referenceAngle', def.referenceAngle, currentAngle()),
+        linearHertz: opt(checkNonNegativeRate, 'linearHertz', def.linearHertz, 0),
+        angularHertz: opt(checkNonNegativeRate, 'angularHertz', def.angularHertz, 0),
+        dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 1),
       });
     }
     case 'motor': {
       const offset =
         def.linearOffset === undefined
-          ? a.getLocalPoint(b.worldCenter)
-          : checkVec2('linearOffset', def.linearOffset);
+          ? localPointOf(a, b.worldCenter)
+          : checkCoordinates('linearOffset', def.linearOffset);
       return new MotorJoint(world, a, b, collide, def.userData, {
         linearOffsetX: offset.x,
         linearOffsetY: offset.y,
-        angularOffset: num('angularOffset', def.angularOffset, currentAngle()),
-        maxForce: nonNegative('maxForce', def.maxForce, 1),
-        maxTorque: nonNegative('maxTorque', def.maxTorque, 1),
-        correctionFactor: nonNegative('correctionFactor', def.correctionFactor, 0.3),
+        angularOffset: opt(checkAngle, 'angularOffset', def.angularOffset, currentAngle()),
+        maxForce: opt(checkNonNegativeForce, 'maxForce', def.maxForce, 1),
+        maxTorque: opt(checkNonNegativeForce, 'maxTorque', def.maxTorque, 1),
+        correctionFactor: opt(checkFraction, 'correctionFactor', def.correctionFactor, 0.3),
       });
     }
   }

@@ -1,4 +1,5 @@
-import { checkBoolean, checkNonNegative, FulcrumError } from '../../core/errors';
+import { checkBoolean, FulcrumError } from '../../core/errors';
+import { checkLength, checkNonNegativeRate } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -60,14 +61,14 @@ export class DistanceJoint extends Joint {
   }
 
   setLength(length: number): void {
-    checkNonNegative('length', length);
+    checkLength('length', length);
     this.changing();
     this.o.length = length;
   }
 
   setLengthRange(minLength: number, maxLength: number): void {
-    checkNonNegative('minLength', minLength);
-    if (maxLength !== Number.POSITIVE_INFINITY) checkNonNegative('maxLength', maxLength);
+    checkLength('minLength', minLength);
+    if (maxLength !== Number.POSITIVE_INFINITY) checkLength('maxLength', maxLength);
     if (minLength > maxLength)
       throw new FulcrumError(`minLength must be <= maxLength, got ${minLength} > ${maxLength}`);
     this.changing();
@@ -82,8 +83,8 @@ export class DistanceJoint extends Joint {
   }
 
   setSpring(hertz: number, dampingRatio: number): void {
-    checkNonNegative('hertz', hertz);
-    checkNonNegative('dampingRatio', dampingRatio);
+    checkNonNegativeRate('hertz', hertz);
+    checkNonNegativeRate('dampingRatio', dampingRatio);
     this.changing();
     this.o.hertz = hertz;
     this.o.dampingRatio = dampingRatio;

@@ -1,4 +1,4 @@
-import { checkFinite, checkNonNegative, checkVec2 } from '../../core/errors';
+import { checkAngle, checkCoordinates, checkNonNegativeForce } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -45,26 +45,26 @@ export class MotorJoint extends Joint {
 
   /** Wanted position of B's centre in A's frame. */
   setLinearOffset(offset: Vec2): void {
-    const o = checkVec2('offset', offset);
+    const o = checkCoordinates('offset', offset);
     this.changing();
     this.o.linearOffsetX = o.x;
     this.o.linearOffsetY = o.y;
   }
 
   setAngularOffset(angle: number): void {
-    checkFinite('angle', angle);
+    checkAngle('angle', angle);
     this.changing();
     this.o.angularOffset = angle;
   }
 
   setMaxForce(force: number): void {
-    checkNonNegative('force', force);
+    checkNonNegativeForce('force', force);
     this.changing();
     this.o.maxForce = force;
   }
 
   setMaxTorque(torque: number): void {
-    checkNonNegative('torque', torque);
+    checkNonNegativeForce('torque', torque);
     this.changing();
     this.o.maxTorque = torque;
   }

@@ -1,4 +1,4 @@
-import { checkVec2 } from '../../core/errors';
+import { checkCoordinates } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -47,7 +47,7 @@ export class MouseJoint extends Joint {
   /** Moves the target (world point) and wakes the body. */
   setTarget(target: Vec2): void {
     this.check();
-    const t = checkVec2('target', target);
+    const t = checkCoordinates('target', target);
     this.o.targetX = t.x;
     this.o.targetY = t.y;
     this.world.core.wake(this.bodyB.slot);

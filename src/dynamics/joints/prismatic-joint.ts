@@ -1,4 +1,5 @@
-import { checkBoolean, checkFinite, checkNonNegative } from '../../core/errors';
+import { checkBoolean } from '../../core/errors';
+import { checkNonNegativeForce, checkRate } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -45,13 +46,13 @@ export class PrismaticJoint extends SliderJoint {
   }
 
   setMotorSpeed(speed: number): void {
-    checkFinite('speed', speed);
+    checkRate('speed', speed);
     this.changing();
     this.o.motorSpeed = speed;
   }
 
   setMaxMotorForce(force: number): void {
-    checkNonNegative('force', force);
+    checkNonNegativeForce('force', force);
     this.changing();
     this.o.maxMotorForce = force;
   }

@@ -1,4 +1,5 @@
-import { checkBoolean, checkFinite, checkNonNegative, FulcrumError } from '../../core/errors';
+import { checkBoolean, FulcrumError } from '../../core/errors';
+import { checkAngle, checkNonNegativeForce, checkNonNegativeRate, checkRate } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -79,13 +80,13 @@ export class RevoluteJoint extends Joint {
   }
 
   setMotorSpeed(speed: number): void {
-    checkFinite('speed', speed);
+    checkRate('speed', speed);
     this.changing();
     this.o.motorSpeed = speed;
   }
 
   setMaxMotorTorque(torque: number): void {
-    checkNonNegative('torque', torque);
+    checkNonNegativeForce('torque', torque);
     this.changing();
     this.o.maxMotorTorque = torque;
   }
@@ -97,8 +98,8 @@ export class RevoluteJoint extends Joint {
   }
 
   setLimits(lowerAngle: number, upperAngle: number): void {
-    checkFinite('lowerAngle', lowerAngle);
-    checkFinite('upperAngle', upperAngle);
+    checkAngle('lowerAngle', lowerAngle);
+    checkAngle('upperAngle', upperAngle);
     if (lowerAngle > upperAngle) {
       throw new FulcrumError(`lowerAngle must be <= upperAngle, got ${lowerAngle} > ${upperAngle}`);
     }
@@ -114,8 +115,8 @@ export class RevoluteJoint extends Joint {
   }
 
   setSpring(hertz: number, dampingRatio: number): void {
-    checkNonNegative('hertz', hertz);
-    checkNonNegative('dampingRatio', dampingRatio);
+    checkNonNegativeRate('hertz', hertz);
+    checkNonNegativeRate('dampingRatio', dampingRatio);
     this.changing();
     this.o.hertz = hertz;
     this.o.dampingRatio = dampingRatio;

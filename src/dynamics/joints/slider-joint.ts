@@ -1,4 +1,5 @@
-import { checkBoolean, checkFinite, checkNonNegative, FulcrumError } from '../../core/errors';
+import { checkBoolean, FulcrumError } from '../../core/errors';
+import { checkCoordinate, checkNonNegativeRate } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -73,8 +74,8 @@ export abstract class SliderJoint extends Joint {
   }
 
   setLimits(lower: number, upper: number): void {
-    checkFinite('lower', lower);
-    checkFinite('upper', upper);
+    checkCoordinate('lower', lower);
+    checkCoordinate('upper', upper);
     if (lower > upper) throw new FulcrumError(`lower must be <= upper, got ${lower} > ${upper}`);
     this.changing();
     this.s.lower = lower;
@@ -88,8 +89,8 @@ export abstract class SliderJoint extends Joint {
   }
 
   setSpring(hertz: number, dampingRatio: number): void {
-    checkNonNegative('hertz', hertz);
-    checkNonNegative('dampingRatio', dampingRatio);
+    checkNonNegativeRate('hertz', hertz);
+    checkNonNegativeRate('dampingRatio', dampingRatio);
     this.changing();
     this.s.hertz = hertz;
     this.s.dampingRatio = dampingRatio;

@@ -1,4 +1,4 @@
-import { checkNonNegative } from '../../core/errors';
+import { checkNonNegativeRate } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -50,9 +50,9 @@ export class WeldJoint extends Joint {
 
   /** 0 makes that part rigid. */
   setStiffness(linearHertz: number, angularHertz: number, dampingRatio: number): void {
-    checkNonNegative('linearHertz', linearHertz);
-    checkNonNegative('angularHertz', angularHertz);
-    checkNonNegative('dampingRatio', dampingRatio);
+    checkNonNegativeRate('linearHertz', linearHertz);
+    checkNonNegativeRate('angularHertz', angularHertz);
+    checkNonNegativeRate('dampingRatio', dampingRatio);
     this.changing();
     this.o.linearHertz = linearHertz;
     this.o.angularHertz = angularHertz;
