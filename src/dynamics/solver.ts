@@ -20,6 +20,8 @@ import {
   prepareContacts as prepareContactConstraints,
   setContactSoftness,
   solveContacts,
+  solveSupports,
+  stiffenLoadedContacts,
   storeImpulses,
   warmStartContacts,
 } from './contact-solver';
@@ -152,6 +154,8 @@ function prepareContacts(core: WorldCore, h: number): void {
       cc,
       makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness),
       makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness),
+      contactHertz,
+      h,
     );
     cc.softnessStep = h;
   }
@@ -160,6 +164,8 @@ function prepareContacts(core: WorldCore, h: number): void {
   addTouchingContacts(contacts, bodies, coloring);
   const total = coloring.finish();
   prepareContactConstraints(cc, coloring.order, total, contacts, bodies, core.shapes);
+  if (cc.heavyPair) stiffenLoadedContacts(cc, bodies, core.gravityX, core.gravityY);
+  else cc.supportCount = 0;
 }
 
 /**
@@ -221,6 +227,7 @@ export function solve(core: WorldCore, dt: number): void {
     }
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, 0, false);
+    if (cc.supportCount > 0) solveSupports(cc, state, invH);
   }
   hinges.store(ctx);
   tree.store(ctx);
