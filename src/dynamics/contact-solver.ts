@@ -102,6 +102,11 @@ export class ContactConstraints {
   readonly softness = new Float64Array(8 * LOAD_LEVELS);
   /** the substep `softness` was set for (see setContactSoftness) */
   softnessStep = Number.NaN;
+  /** the highest level below the limit of setSoftness in `softness`, of the contact and the anchored softness */
+  readonly levelCaps = new Int32Array(2);
+  /** the softness of islands stepped with finer substeps (see FineIslands), and the substep it was set for */
+  readonly fineSoftness = new Float64Array(8 * LOAD_LEVELS);
+  fineSoftnessStep = Number.NaN;
   /** whether a constraint joins two moving bodies of which one is four or more times heavier */
   heavyPair = false;
   readonly loadPaths = new LoadPaths();
@@ -113,6 +118,20 @@ export class ContactConstraints {
    */
   supports = new Int32Array(0);
   supportCount = 0;
+  /**
+   * how many levels the stiffest support wanted beyond the cap of its softness: its island needs 2^that
+   * times the substeps to carry its load as stiffly as it should
+   */
+  levelExcess = 0;
+  /** the constraints and supports of islands stepped with finer substeps begin here (see separateFineConstraints) */
+  fineStart = 0;
+  fineSupportStart = 0;
+  /** how many times finer those islands' substeps are */
+  fineFactor = 1;
+  /** scratch of separateFineConstraints */
+  moved = new Float64Array(0);
+  movedIds = new Int32Array(0);
+  newIndex = new Int32Array(0);
   /** per depth: where its supports begin in `supports` (counting sort) */
   depthStart = new Int32Array(0);
 
@@ -130,6 +149,14 @@ export class ContactConstraints {
   }
 }
 
+/** The highest level whose contact of `hertz` rings at no more than the limit of setSoftness at substep `h`. */
+function levelCap(hertz: number, h: number): number {
+  let level = 0;
+  for (let f = 2 * hertz; f * h <= MAX_LOADED_HERTZ_PER_SUBSTEP_RATE && level < LOAD_LEVELS - 1; f *= 2)
+    level++;
+  return level;
+}
+
 /**
  * Writes `soft`, the softness of a spring of `hertz` at substep `h`, at `at`, then its stiffer levels.
  * A soft contact is a spring and a damper sized to the contact's effective mass m (stiffness m w^2,
@@ -145,11 +172,11 @@ function setSoftness(out: Float64Array, at: number, soft: Softness, hertz: numbe
   out[at + 2] = soft.impulseScale;
   out[at + 3] = soft.impulseScale / soft.massScale;
   const a2 = soft.massScale / soft.impulseScale;
+  // a rigid contact (impulse scale 0) is as stiff as it gets
+  const cap = soft.impulseScale > 0 ? levelCap(hertz, h) : 0;
   let r = 1;
-  let f = hertz;
   for (let level = 1; level < LOAD_LEVELS; level++) {
-    f *= 2;
-    if (soft.impulseScale > 0 && f * h <= MAX_LOADED_HERTZ_PER_SUBSTEP_RATE) r *= 0.25;
+    if (level <= cap) r *= 0.25;
     const o = at + 4 * level;
     out[o] = soft.biasRate;
     out[o + 1] = r === 1 ? soft.massScale : a2 / (a2 + r);
@@ -159,18 +186,24 @@ function setSoftness(out: Float64Array, at: number, soft: Softness, hertz: numbe
 }
 
 /**
- * Sets the softness of the contacts (`contactSoft`) and of the contacts held like the ground
- * (`anchoredSoft`, see prepareContacts) for the steps to come.
+ * Sets the softness of the contacts (`contactSoft`, a spring of `contactHertz` at substep `h`) and of
+ * the contacts held like the ground (`anchoredSoft`, twice as fast, see prepareContacts) for the steps
+ * to come: in `cc.softness`, or in `cc.fineSoftness` for islands stepped with finer substeps.
  */
 export function setContactSoftness(
   cc: ContactConstraints,
+  fine: boolean,
   contactSoft: Softness,
   anchoredSoft: Softness,
   contactHertz: number,
   h: number,
 ): void {
-  setSoftness(cc.softness, 0, contactSoft, contactHertz, h);
-  setSoftness(cc.softness, ANCHORED_SOFTNESS, anchoredSoft, 2 * contactHertz, h);
+  const out = fine ? cc.fineSoftness : cc.softness;
+  setSoftness(out, 0, contactSoft, contactHertz, h);
+  setSoftness(out, ANCHORED_SOFTNESS, anchoredSoft, 2 * contactHertz, h);
+  if (fine) return;
+  cc.levelCaps[0] = anchoredSoft.impulseScale > 0 ? levelCap(contactHertz, h) : 0;
+  cc.levelCaps[1] = anchoredSoft.impulseScale > 0 ? levelCap(2 * contactHertz, h) : 0;
 }
 
 /** mass ratio from which a contact between two moving bodies is as stiff as one with the ground */
@@ -195,6 +228,8 @@ export function prepareContacts(
   // set before the loop, which must end the function (see listAwakeBodies in solver.ts)
   cc.count = count;
   cc.heavyPair = false;
+  cc.fineStart = count;
+  cc.fineFactor = 1;
   const d = cc.data;
   const rd = cc.restitution;
   const pointX = contacts.pointX;
@@ -315,10 +350,15 @@ export function prepareContacts(
 }
 
 /** Applies the impulses kept from the previous substep (or step) so the solver starts near the answer. */
-export function warmStartContacts(cc: ContactConstraints, state: Float64Array): void {
+export function warmStartContacts(
+  cc: ContactConstraints,
+  state: Float64Array,
+  from: number,
+  to: number,
+): void {
   const d = cc.data;
   const ids = cc.ids;
-  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
+  for (let i = from & IndexBound.MAX, n = to & IndexBound.MAX; i < n; i++) {
     const base = i * C.STRIDE;
     const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
     const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
@@ -381,11 +421,13 @@ export function solveContacts(
   invH: number,
   useBias: boolean,
   maxPushSpeed: number,
+  soft: Float64Array,
+  from: number,
+  to: number,
 ): void {
   const d = cc.data;
   const ids = cc.ids;
-  const soft = cc.softness;
-  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
+  for (let i = from & IndexBound.MAX, n = to & IndexBound.MAX; i < n; i++) {
     const base = i * C.STRIDE;
     const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
     const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
@@ -621,6 +663,7 @@ export function stiffenLoadedContacts(
 ): void {
   const g = Math.sqrt(gx * gx + gy * gy);
   cc.supportCount = 0;
+  cc.levelExcess = 0;
   if (g === 0) return;
   orientContacts(cc, gx / g, gy / g);
   const paths = cc.loadPaths;
@@ -696,8 +739,75 @@ function listSupports(
   for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
     const level = loadLevel(cc, paths, invMass, i);
     if (level === 0) continue;
-    d[i * C.STRIDE + C.SOFTNESS] += 4 * level;
+    const base = d[i * C.STRIDE + C.SOFTNESS];
+    const excess = level - cc.levelCaps[base === 0 ? 0 : 1];
+    if (excess > cc.levelExcess) cc.levelExcess = excess;
+    d[i * C.STRIDE + C.SOFTNESS] = base + 4 * level;
     supports[next[support[0]]++] = i * 2 + cc.lower[i];
+  }
+}
+
+/**
+ * Moves the constraints with a body marked in `fine` (a body of an island stepped with `factor` times
+ * finer substeps) after the others, both in the order they had, and the supports likewise; sets
+ * `fineStart` and `fineSupportStart`. Constraints of a colour stay apart from those of other colours,
+ * so within each part the order is still one Gauss-Seidel order of the colouring. The impulses kept
+ * between steps are per substep of the world's: the moved constraints' are divided by `factor` here
+ * and multiplied back in storeImpulses.
+ */
+export function separateFineConstraints(cc: ContactConstraints, fine: Uint8Array, factor: number): void {
+  const n = cc.count;
+  if (cc.newIndex.length < n) {
+    cc.newIndex = growI32(cc.newIndex, cc.capacity);
+    cc.moved = growF64(cc.moved, cc.capacity * (C.STRIDE + R.STRIDE));
+    cc.movedIds = growI32(cc.movedIds, cc.capacity * 3);
+  }
+  const ids = cc.ids;
+  const newIndex = cc.newIndex;
+  let next = 0;
+  for (let pass = 0; pass < 2; pass++) {
+    if (pass === 1) cc.fineStart = next;
+    for (let i = 0; i < n; i++) {
+      const isFine = fine[ids[i * 3]] !== 0 || fine[ids[i * 3 + 1]] !== 0;
+      if (isFine === (pass === 1)) newIndex[i] = next++;
+    }
+  }
+  const moved = cc.moved;
+  const movedIds = cc.movedIds;
+  const data = cc.data;
+  const rd = cc.restitution;
+  const dataLength = n * C.STRIDE;
+  for (let k = 0; k < dataLength; k++) moved[k] = data[k];
+  for (let k = 0; k < n * R.STRIDE; k++) moved[dataLength + k] = rd[k];
+  for (let k = 0; k < n * 3; k++) movedIds[k] = ids[k];
+  for (let i = 0; i < n; i++) {
+    const to = newIndex[i];
+    for (let k = 0; k < C.STRIDE; k++) data[to * C.STRIDE + k] = moved[i * C.STRIDE + k];
+    for (let k = 0; k < R.STRIDE; k++) rd[to * R.STRIDE + k] = moved[dataLength + i * R.STRIDE + k];
+    ids[to * 3] = movedIds[i * 3];
+    ids[to * 3 + 1] = movedIds[i * 3 + 1];
+    ids[to * 3 + 2] = movedIds[i * 3 + 2];
+  }
+  // the supports: renumbered, the fine ones after the others (movedIds is free again as scratch)
+  const supports = cc.supports;
+  const count = cc.supportCount;
+  let coarse = 0;
+  for (let j = 0; j < count; j++) {
+    const k = newIndex[supports[j] >> 1];
+    const entry = k * 2 + (supports[j] & 1);
+    if (k < cc.fineStart) supports[coarse++] = entry;
+    else movedIds[j - coarse] = entry;
+  }
+  cc.fineSupportStart = coarse;
+  for (let j = coarse; j < count; j++) supports[j] = movedIds[j - coarse];
+  cc.fineFactor = factor;
+  const scale = 1 / factor;
+  for (let i = cc.fineStart; i < n; i++) {
+    for (let j = 0; j < 2; j++) {
+      const p = i * C.STRIDE + C.POINTS + j * P.STRIDE;
+      data[p + P.NIMP] *= scale;
+      data[p + P.TIMP] *= scale;
+    }
   }
 }
 
@@ -708,11 +818,17 @@ function listSupports(
  * passed on: held fixed, it could otherwise throw the upper body with a speed it never had, and
  * supports that rock would pump energy into the load; they only stop it. The impulses are not kept.
  */
-export function solveSupports(cc: ContactConstraints, state: Float64Array, invH: number): void {
+export function solveSupports(
+  cc: ContactConstraints,
+  state: Float64Array,
+  invH: number,
+  from: number,
+  to: number,
+): void {
   const d = cc.data;
   const ids = cc.ids;
   const supports = cc.supports;
-  for (let j = 0, n = cc.supportCount & IndexBound.MAX; j < n; j++) {
+  for (let j = from & IndexBound.MAX, n = to & IndexBound.MAX; j < n; j++) {
     const i = supports[j] >> 1;
     const lowerIsB = (supports[j] & 1) === 1;
     const base = i * C.STRIDE;
@@ -746,7 +862,7 @@ export function solveSupports(cc: ContactConstraints, state: Float64Array, invH:
     // each point's normal velocity, plus the gap it may close in the substep, plus its lower body's
     // approach: what a push x must cancel
     const toward1 = lowerSpeed + (lowerIsB ? -wB * rn1B : wA * rn1A);
-    const t1 = dvn + wB * rn1B - wA * rn1A + (s1 > 0 ? s1 * invH : 0) + (toward1 > 0 ? toward1 : 0);
+    const t1 = dvn + wB * rn1B - wA * rn1A + (s1 > 0 ? s1 * invH : 0) + Math.max(toward1, 0);
     const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
     let x1 = 0;
     let x2 = 0;
@@ -758,7 +874,7 @@ export function solveSupports(cc: ContactConstraints, state: Float64Array, invH:
       rn2B = d[p2 + P.RNB];
       const s2 = dpn + qBc * d[p2 + P.QB] + qBs * rn2B + qAc * d[p2 + P.QA] - qAs * rn2A + d[p2 + P.ADJ_SEP];
       const toward2 = lowerSpeed + (lowerIsB ? -wB * rn2B : wA * rn2A);
-      const t2 = dvn + wB * rn2B - wA * rn2A + (s2 > 0 ? s2 * invH : 0) + (toward2 > 0 ? toward2 : 0);
+      const t2 = dvn + wB * rn2B - wA * rn2A + (s2 > 0 ? s2 * invH : 0) + Math.max(toward2, 0);
       const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
       const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
       const det = k11 * k22 - k12 * k12;
@@ -874,11 +990,13 @@ export function storeImpulses(
     const base = i * C.STRIDE;
     const contact = ids[i * 3 + 2];
     const count = d[base + C.COUNT];
+    // per substep of the world's (see separateFineConstraints)
+    const scale = i < cc.fineStart ? 1 : cc.fineFactor;
     for (let j = 0; j < count; j++) {
       const p = base + C.POINTS + j * P.STRIDE;
       const k = contact * 2 + j;
-      normalImpulse[k] = d[p + P.NIMP];
-      tangentImpulse[k] = d[p + P.TIMP];
+      normalImpulse[k] = scale * d[p + P.NIMP];
+      tangentImpulse[k] = scale * d[p + P.TIMP];
       maxNormalImpulse[k] = d[p + P.MAX_NIMP];
       approachSpeed[k] = -cc.restitution[i * R.STRIDE + R.REL_VEL + j];
     }

@@ -17,7 +17,9 @@ import {
 import { BodyFlag, BodyKind, type BodyStore, S } from './body-store';
 import {
   applyRestitution,
+  type ContactConstraints,
   prepareContacts as prepareContactConstraints,
+  separateFineConstraints,
   setContactSoftness,
   solveContacts,
   solveSupports,
@@ -27,6 +29,7 @@ import {
 } from './contact-solver';
 import { ContactFlag, type ContactStore } from './contact-store';
 import { deferBullet, solveBullets, solveContinuous, sweepStart } from './continuous';
+import { MAX_FINE_FACTOR } from './fine-islands';
 import type { GraphColoring } from './graph-color';
 import type { Joint } from './joints/joint';
 import { ShapeFlag } from './shape-store';
@@ -141,22 +144,28 @@ function addTouchingContacts(contacts: ContactStore, bodies: BodyStore, coloring
   }
 }
 
+/** Sets the contact softness for substep `h`: the world's, or that of the islands stepped finer. */
+function setSoftnessFor(cc: ContactConstraints, fine: boolean, h: number): void {
+  // a contact spring faster than an eighth of the substep rate makes large piles ring at few
+  // substeps (a base-20 pyramid at 2 substeps breathed +-60 mm at 3 Hz for good with a quarter)
+  const contactHertz = Math.min(CONTACT_HERTZ, 0.125 / h);
+  setContactSoftness(
+    cc,
+    fine,
+    makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness),
+    makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness),
+    contactHertz,
+    h,
+  );
+}
+
 /** Builds one constraint per touching solid contact that has an awake body. */
 function prepareContacts(core: WorldCore, h: number): void {
   const contacts = core.contacts;
   const bodies = core.bodies;
   const cc = core.constraints;
   if (cc.softnessStep !== h) {
-    // a contact spring faster than an eighth of the substep rate makes large piles ring at few
-    // substeps (a base-20 pyramid at 2 substeps breathed +-60 mm at 3 Hz for good with a quarter)
-    const contactHertz = Math.min(CONTACT_HERTZ, 0.125 / h);
-    setContactSoftness(
-      cc,
-      makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness),
-      makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness),
-      contactHertz,
-      h,
-    );
+    setSoftnessFor(cc, false, h);
     cc.softnessStep = h;
   }
   const coloring = core.coloring;
@@ -164,8 +173,54 @@ function prepareContacts(core: WorldCore, h: number): void {
   addTouchingContacts(contacts, bodies, coloring);
   const total = coloring.finish();
   prepareContactConstraints(cc, coloring.order, total, contacts, bodies, core.shapes);
+  cc.supportCount = 0;
+  cc.levelExcess = 0;
   if (cc.heavyPair) stiffenLoadedContacts(cc, bodies, core.gravityX, core.gravityY);
-  else cc.supportCount = 0;
+  cc.fineSupportStart = cc.supportCount;
+}
+
+/**
+ * Whether some islands are stepped with finer substeps (see FineIslands): those whose loads want
+ * contacts stiffer than the world's substeps allow, by 2^levelExcess times the substeps (at most
+ * MAX_FINE_FACTOR). Lists their bodies and moves their constraints after the others.
+ */
+function splitFineIslands(core: WorldCore): number {
+  const cc = core.constraints;
+  if (cc.levelExcess === 0) return 1;
+  const factor = Math.min(MAX_FINE_FACTOR, 2 ** cc.levelExcess);
+  if (!core.fineIslands.split(cc, core.bodies, core.awake, core.awakeCount, core.activeJoints)) return 1;
+  separateFineConstraints(cc, core.fineIslands.fine, factor);
+  return factor;
+}
+
+/**
+ * The soft step of the islands split off by splitFineIslands, with `subSteps` substeps: contacts only
+ * (they have no joints), in the constraints' range from `fineStart`.
+ */
+function solveFineIslands(core: WorldCore, dt: number, subSteps: number): void {
+  const h = dt / subSteps;
+  const invH = 1 / h;
+  const cc = core.constraints;
+  const fine = core.fineIslands;
+  const bodies = core.bodies;
+  const state = bodies.state;
+  const settings = core.settings;
+  if (cc.fineSoftnessStep !== h) {
+    setSoftnessFor(cc, true, h);
+    cc.fineSoftnessStep = h;
+  }
+  const soft = cc.fineSoftness;
+  const from = cc.fineStart;
+  const to = cc.count;
+  prepareVelocityUpdate(bodies, fine.bodies, fine.count, h, core.gravityX, core.gravityY, fine.update);
+  for (let i = 0; i < subSteps; i++) {
+    integrateVelocities(bodies, fine.bodies, fine.count, fine.update, h, settings.maxLinearSpeed);
+    warmStartContacts(cc, state, from, to);
+    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed, soft, from, to);
+    integratePositions(bodies, fine.bodies, fine.count, h, settings.maxLinearSpeed, i === subSteps - 1);
+    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed, soft, from, to);
+    solveSupports(cc, state, invH, cc.fineSupportStart, cc.supportCount);
+  }
 }
 
 /**
@@ -186,11 +241,16 @@ export function solve(core: WorldCore, dt: number): void {
   const iterativeCount = iterative.length;
   const jointSoft = ctx.jointSoftness;
   prepareContacts(core, h);
+  const fineFactor = splitFineIslands(core);
   const bodies = core.bodies;
   const state = bodies.state;
   const cc = core.constraints;
-  const awake = core.awake;
-  const awakeCount = core.awakeCount;
+  // the bodies and constraints stepped here: all but those of the islands stepped finer
+  const awake = fineFactor > 1 ? core.fineIslands.coarse : core.awake;
+  const awakeCount = fineFactor > 1 ? core.fineIslands.coarseCount : core.awakeCount;
+  const contactEnd = cc.fineStart;
+  const supportEnd = cc.fineSupportStart;
+  const contactSoft = cc.softness;
   const settings = core.settings;
   // the tree projects again after the others only if they act on its bodies
   const coupled = tree.isCoupled(cc.ids, cc.count);
@@ -202,7 +262,7 @@ export function solve(core: WorldCore, dt: number): void {
     integrateVelocities(bodies, awake, awakeCount, update, h, settings.maxLinearSpeed);
     hinges.warmStart(state, ctx.warmSpeedLimit, ctx.warmTurnLimit);
     for (let j = 0; j < iterativeCount; j++) iterative[j].warmStartGuarded(ctx);
-    warmStartContacts(cc, state);
+    warmStartContacts(cc, state, 0, contactEnd);
     // positions change only in integratePositions: the last substep's relax factorization still holds
     if (i === 0) tree.factor(ctx, true, false);
     tree.project(state, treeBias, true);
@@ -212,7 +272,7 @@ export function solve(core: WorldCore, dt: number): void {
       // a row weighed with the tree's mass moved only its own two bodies: the tree carries it on
       if (iterative[j].treeAxialMass > 0) tree.project(state, treeBias, false);
     }
-    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
+    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed, contactSoft, 0, contactEnd);
     if (coupled) tree.project(state, treeBias, false);
     integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed, i === subSteps - 1);
     tree.factor(ctx, false, i === subSteps - 1);
@@ -225,10 +285,11 @@ export function solve(core: WorldCore, dt: number): void {
       iterative[j].solve(ctx, false);
       if (iterative[j].treeAxialMass > 0) tree.project(state, 0, false);
     }
-    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
+    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed, contactSoft, 0, contactEnd);
     if (coupled) tree.project(state, 0, false);
-    if (cc.supportCount > 0) solveSupports(cc, state, invH);
+    if (supportEnd > 0) solveSupports(cc, state, invH, 0, supportEnd);
   }
+  if (fineFactor > 1) solveFineIslands(core, dt, fineFactor * subSteps);
   hinges.store(ctx);
   tree.store(ctx);
   applyRestitution(cc, state, settings.restitutionThreshold);
