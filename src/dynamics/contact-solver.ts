@@ -104,9 +104,6 @@ export class ContactConstraints {
   softnessStep = Number.NaN;
   /** the highest level below the limit of setSoftness in `softness`, of the contact and the anchored softness */
   readonly levelCaps = new Int32Array(2);
-  /** the softness of islands stepped with finer substeps (see FineIslands), and the substep it was set for */
-  readonly fineSoftness = new Float64Array(8 * LOAD_LEVELS);
-  fineSoftnessStep = Number.NaN;
   /** whether a constraint joins two moving bodies of which one is four or more times heavier */
   heavyPair = false;
   readonly loadPaths = new LoadPaths();
@@ -123,14 +120,7 @@ export class ContactConstraints {
    * times the substeps to carry its load as stiffly as it should
    */
   levelExcess = 0;
-  /** the constraints and supports of islands stepped with finer substeps begin here (see separateFineConstraints) */
-  fineStart = 0;
-  fineSupportStart = 0;
-  /** how many times finer those islands' substeps are */
-  fineFactor = 1;
-  /** scratch of separateFineConstraints */
-  moved = new Float64Array(0);
-  movedIds = new Int32Array(0);
+  /** per constraint, scratch of moveFineConstraints: its index in the part it is moved to */
   newIndex = new Int32Array(0);
   /** per depth: where its supports begin in `supports` (counting sort) */
   depthStart = new Int32Array(0);
@@ -188,20 +178,17 @@ function setSoftness(out: Float64Array, at: number, soft: Softness, hertz: numbe
 /**
  * Sets the softness of the contacts (`contactSoft`, a spring of `contactHertz` at substep `h`) and of
  * the contacts held like the ground (`anchoredSoft`, twice as fast, see prepareContacts) for the steps
- * to come: in `cc.softness`, or in `cc.fineSoftness` for islands stepped with finer substeps.
+ * to come.
  */
 export function setContactSoftness(
   cc: ContactConstraints,
-  fine: boolean,
   contactSoft: Softness,
   anchoredSoft: Softness,
   contactHertz: number,
   h: number,
 ): void {
-  const out = fine ? cc.fineSoftness : cc.softness;
-  setSoftness(out, 0, contactSoft, contactHertz, h);
-  setSoftness(out, ANCHORED_SOFTNESS, anchoredSoft, 2 * contactHertz, h);
-  if (fine) return;
+  setSoftness(cc.softness, 0, contactSoft, contactHertz, h);
+  setSoftness(cc.softness, ANCHORED_SOFTNESS, anchoredSoft, 2 * contactHertz, h);
   cc.levelCaps[0] = anchoredSoft.impulseScale > 0 ? levelCap(contactHertz, h) : 0;
   cc.levelCaps[1] = anchoredSoft.impulseScale > 0 ? levelCap(2 * contactHertz, h) : 0;
 }
@@ -228,8 +215,6 @@ export function prepareContacts(
   // set before the loop, which must end the function (see listAwakeBodies in solver.ts)
   cc.count = count;
   cc.heavyPair = false;
-  cc.fineStart = count;
-  cc.fineFactor = 1;
   const d = cc.data;
   const rd = cc.restitution;
   const pointX = contacts.pointX;
@@ -350,15 +335,10 @@ export function prepareContacts(
 }
 
 /** Applies the impulses kept from the previous substep (or step) so the solver starts near the answer. */
-export function warmStartContacts(
-  cc: ContactConstraints,
-  state: Float64Array,
-  from: number,
-  to: number,
-): void {
+export function warmStartContacts(cc: ContactConstraints, state: Float64Array): void {
   const d = cc.data;
   const ids = cc.ids;
-  for (let i = from & IndexBound.MAX, n = to & IndexBound.MAX; i < n; i++) {
+  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
     const base = i * C.STRIDE;
     const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
     const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
@@ -421,13 +401,11 @@ export function solveContacts(
   invH: number,
   useBias: boolean,
   maxPushSpeed: number,
-  soft: Float64Array,
-  from: number,
-  to: number,
 ): void {
   const d = cc.data;
   const ids = cc.ids;
-  for (let i = from & IndexBound.MAX, n = to & IndexBound.MAX; i < n; i++) {
+  const soft = cc.softness;
+  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
     const base = i * C.STRIDE;
     const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
     const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
@@ -747,68 +725,79 @@ function listSupports(
   }
 }
 
+/** Copies constraint `i` of `from` to index `k` of `to`, its impulses times `scale`. */
+function copyConstraint(
+  from: ContactConstraints,
+  i: number,
+  to: ContactConstraints,
+  k: number,
+  scale: number,
+): void {
+  const a = from.data;
+  const b = to.data;
+  for (let j = 0; j < C.STRIDE; j++) b[k * C.STRIDE + j] = a[i * C.STRIDE + j];
+  for (let j = 0; j < 2; j++) {
+    const p = k * C.STRIDE + C.POINTS + j * P.STRIDE;
+    b[p + P.NIMP] *= scale;
+    b[p + P.TIMP] *= scale;
+  }
+  for (let j = 0; j < R.STRIDE; j++) to.restitution[k * R.STRIDE + j] = from.restitution[i * R.STRIDE + j];
+  for (let j = 0; j < 3; j++) to.ids[k * 3 + j] = from.ids[i * 3 + j];
+}
+
 /**
  * Moves the constraints with a body marked in `fine` (a body of an island stepped with `factor` times
- * finer substeps) after the others, both in the order they had, and the supports likewise; sets
- * `fineStart` and `fineSupportStart`. Constraints of a colour stay apart from those of other colours,
- * so within each part the order is still one Gauss-Seidel order of the colouring. The impulses kept
- * between steps are per substep of the world's: the moved constraints' are divided by `factor` here
- * and multiplied back in storeImpulses.
+ * finer substeps, see FineIslands) from `cc` to `into`, and their supports with them; both keep their
+ * order, so each part is still in an order of the colouring (its colours apart from each other) and
+ * its supports still lowest first. Impulses are kept between steps per substep of the world's: the
+ * moved ones are divided by `factor` here and multiplied back by restoreFineConstraints.
  */
-export function separateFineConstraints(cc: ContactConstraints, fine: Uint8Array, factor: number): void {
+export function moveFineConstraints(
+  cc: ContactConstraints,
+  fine: Uint8Array,
+  into: ContactConstraints,
+  factor: number,
+): void {
   const n = cc.count;
-  if (cc.newIndex.length < n) {
-    cc.newIndex = growI32(cc.newIndex, cc.capacity);
-    cc.moved = growF64(cc.moved, cc.capacity * (C.STRIDE + R.STRIDE));
-    cc.movedIds = growI32(cc.movedIds, cc.capacity * 3);
-  }
+  into.reserve(n);
+  if (cc.newIndex.length < n) cc.newIndex = growI32(cc.newIndex, cc.capacity);
   const ids = cc.ids;
   const newIndex = cc.newIndex;
-  let next = 0;
-  for (let pass = 0; pass < 2; pass++) {
-    if (pass === 1) cc.fineStart = next;
-    for (let i = 0; i < n; i++) {
-      const isFine = fine[ids[i * 3]] !== 0 || fine[ids[i * 3 + 1]] !== 0;
-      if (isFine === (pass === 1)) newIndex[i] = next++;
-    }
-  }
-  const moved = cc.moved;
-  const movedIds = cc.movedIds;
-  const data = cc.data;
-  const rd = cc.restitution;
-  const dataLength = n * C.STRIDE;
-  for (let k = 0; k < dataLength; k++) moved[k] = data[k];
-  for (let k = 0; k < n * R.STRIDE; k++) moved[dataLength + k] = rd[k];
-  for (let k = 0; k < n * 3; k++) movedIds[k] = ids[k];
+  let kept = 0;
+  let moved = 0;
   for (let i = 0; i < n; i++) {
-    const to = newIndex[i];
-    for (let k = 0; k < C.STRIDE; k++) data[to * C.STRIDE + k] = moved[i * C.STRIDE + k];
-    for (let k = 0; k < R.STRIDE; k++) rd[to * R.STRIDE + k] = moved[dataLength + i * R.STRIDE + k];
-    ids[to * 3] = movedIds[i * 3];
-    ids[to * 3 + 1] = movedIds[i * 3 + 1];
-    ids[to * 3 + 2] = movedIds[i * 3 + 2];
-  }
-  // the supports: renumbered, the fine ones after the others (movedIds is free again as scratch)
-  const supports = cc.supports;
-  const count = cc.supportCount;
-  let coarse = 0;
-  for (let j = 0; j < count; j++) {
-    const k = newIndex[supports[j] >> 1];
-    const entry = k * 2 + (supports[j] & 1);
-    if (k < cc.fineStart) supports[coarse++] = entry;
-    else movedIds[j - coarse] = entry;
-  }
-  cc.fineSupportStart = coarse;
-  for (let j = coarse; j < count; j++) supports[j] = movedIds[j - coarse];
-  cc.fineFactor = factor;
-  const scale = 1 / factor;
-  for (let i = cc.fineStart; i < n; i++) {
-    for (let j = 0; j < 2; j++) {
-      const p = i * C.STRIDE + C.POINTS + j * P.STRIDE;
-      data[p + P.NIMP] *= scale;
-      data[p + P.TIMP] *= scale;
+    if (fine[ids[i * 3]] !== 0 || fine[ids[i * 3 + 1]] !== 0) {
+      copyConstraint(cc, i, into, moved, 1 / factor);
+      newIndex[i] = -1 - moved++;
+    } else {
+      // kept <= i: compacting in place never overwrites one still to be read
+      if (kept !== i) copyConstraint(cc, i, cc, kept, 1);
+      newIndex[i] = kept++;
     }
   }
+  cc.count = kept;
+  into.count = moved;
+  let keptSupports = 0;
+  let movedSupports = 0;
+  for (let j = 0; j < cc.supportCount; j++) {
+    const k = newIndex[cc.supports[j] >> 1];
+    const side = cc.supports[j] & 1;
+    if (k >= 0) cc.supports[keptSupports++] = k * 2 + side;
+    else into.supports[movedSupports++] = (-1 - k) * 2 + side;
+  }
+  cc.supportCount = keptSupports;
+  into.supportCount = movedSupports;
+}
+
+/** Appends the constraints of `from` (see moveFineConstraints) to those of `cc`, impulses times `factor`. */
+export function restoreFineConstraints(
+  cc: ContactConstraints,
+  from: ContactConstraints,
+  factor: number,
+): void {
+  const n = cc.count;
+  for (let i = 0; i < from.count; i++) copyConstraint(from, i, cc, n + i, factor);
+  cc.count = n + from.count;
 }
 
 /**
@@ -818,17 +807,11 @@ export function separateFineConstraints(cc: ContactConstraints, fine: Uint8Array
  * passed on: held fixed, it could otherwise throw the upper body with a speed it never had, and
  * supports that rock would pump energy into the load; they only stop it. The impulses are not kept.
  */
-export function solveSupports(
-  cc: ContactConstraints,
-  state: Float64Array,
-  invH: number,
-  from: number,
-  to: number,
-): void {
+export function solveSupports(cc: ContactConstraints, state: Float64Array, invH: number): void {
   const d = cc.data;
   const ids = cc.ids;
   const supports = cc.supports;
-  for (let j = from & IndexBound.MAX, n = to & IndexBound.MAX; j < n; j++) {
+  for (let j = 0, n = cc.supportCount & IndexBound.MAX; j < n; j++) {
     const i = supports[j] >> 1;
     const lowerIsB = (supports[j] & 1) === 1;
     const base = i * C.STRIDE;
@@ -990,13 +973,11 @@ export function storeImpulses(
     const base = i * C.STRIDE;
     const contact = ids[i * 3 + 2];
     const count = d[base + C.COUNT];
-    // per substep of the world's (see separateFineConstraints)
-    const scale = i < cc.fineStart ? 1 : cc.fineFactor;
     for (let j = 0; j < count; j++) {
       const p = base + C.POINTS + j * P.STRIDE;
       const k = contact * 2 + j;
-      normalImpulse[k] = scale * d[p + P.NIMP];
-      tangentImpulse[k] = scale * d[p + P.TIMP];
+      normalImpulse[k] = d[p + P.NIMP];
+      tangentImpulse[k] = d[p + P.TIMP];
       maxNormalImpulse[k] = d[p + P.MAX_NIMP];
       approachSpeed[k] = -cc.restitution[i * R.STRIDE + R.REL_VEL + j];
     }

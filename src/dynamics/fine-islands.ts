@@ -2,7 +2,7 @@ import { growF64, growI32, growU8 } from '../core/grow';
 import { IndexBound } from '../core/index-bound';
 import { V } from './body-solver';
 import { BodyKind, type BodyStore } from './body-store';
-import type { ContactConstraints } from './contact-solver';
+import { ContactConstraints } from './contact-solver';
 import type { Joint } from './joints/joint';
 
 /** the most times an island's substeps are multiplied to carry a heavy load */
@@ -26,6 +26,8 @@ export class FineIslands {
   count = 0;
   /** the velocity update of `bodies` (see prepareVelocityUpdate) */
   update = new Float64Array(0);
+  /** the constraints of those islands while they are stepped (see moveFineConstraints) */
+  readonly constraints = new ContactConstraints();
   /** union-find parent per body slot */
   private parent = new Int32Array(0);
   /** per island root: 1 when the island has a support, 2 when it has a joint */
@@ -91,7 +93,7 @@ export class FineIslands {
   private list(cc: ContactConstraints, kind: Uint8Array, awake: Int32Array, awakeCount: number): boolean {
     const fine = this.fine;
     const ids = cc.ids;
-    // the fixed bodies of the constraints are read too (separateFineConstraints): cleared first
+    // the fixed bodies of the constraints are read too (moveFineConstraints): cleared first
     for (let k = 0, n = (3 * cc.count) & IndexBound.MAX; k < n; k++) {
       if (k % 3 !== 2) fine[ids[k]] = 0;
     }

@@ -18,8 +18,9 @@ import { BodyFlag, BodyKind, type BodyStore, S } from './body-store';
 import {
   applyRestitution,
   type ContactConstraints,
+  moveFineConstraints,
   prepareContacts as prepareContactConstraints,
-  separateFineConstraints,
+  restoreFineConstraints,
   setContactSoftness,
   solveContacts,
   solveSupports,
@@ -144,14 +145,15 @@ function addTouchingContacts(contacts: ContactStore, bodies: BodyStore, coloring
   }
 }
 
-/** Sets the contact softness for substep `h`: the world's, or that of the islands stepped finer. */
-function setSoftnessFor(cc: ContactConstraints, fine: boolean, h: number): void {
+/** Sets the softness of the contacts of `cc` for substep `h`, unless it is set for `h` already. */
+function setSoftnessFor(cc: ContactConstraints, h: number): void {
+  if (cc.softnessStep === h) return;
+  cc.softnessStep = h;
   // a contact spring faster than an eighth of the substep rate makes large piles ring at few
   // substeps (a base-20 pyramid at 2 substeps breathed +-60 mm at 3 Hz for good with a quarter)
   const contactHertz = Math.min(CONTACT_HERTZ, 0.125 / h);
   setContactSoftness(
     cc,
-    fine,
     makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness),
     makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness),
     contactHertz,
@@ -164,10 +166,7 @@ function prepareContacts(core: WorldCore, h: number): void {
   const contacts = core.contacts;
   const bodies = core.bodies;
   const cc = core.constraints;
-  if (cc.softnessStep !== h) {
-    setSoftnessFor(cc, false, h);
-    cc.softnessStep = h;
-  }
+  setSoftnessFor(cc, h);
   const coloring = core.coloring;
   coloring.begin(bodies.capacity, contacts.liveCount);
   addTouchingContacts(contacts, bodies, coloring);
@@ -176,51 +175,46 @@ function prepareContacts(core: WorldCore, h: number): void {
   cc.supportCount = 0;
   cc.levelExcess = 0;
   if (cc.heavyPair) stiffenLoadedContacts(cc, bodies, core.gravityX, core.gravityY);
-  cc.fineSupportStart = cc.supportCount;
 }
 
 /**
  * Whether some islands are stepped with finer substeps (see FineIslands): those whose loads want
  * contacts stiffer than the world's substeps allow, by 2^levelExcess times the substeps (at most
- * MAX_FINE_FACTOR). Lists their bodies and moves their constraints after the others.
+ * MAX_FINE_FACTOR). Lists their bodies apart and moves their constraints to FineIslands.constraints.
  */
 function splitFineIslands(core: WorldCore): number {
   const cc = core.constraints;
   if (cc.levelExcess === 0) return 1;
   const factor = Math.min(MAX_FINE_FACTOR, 2 ** cc.levelExcess);
-  if (!core.fineIslands.split(cc, core.bodies, core.awake, core.awakeCount, core.activeJoints)) return 1;
-  separateFineConstraints(cc, core.fineIslands.fine, factor);
+  const fine = core.fineIslands;
+  if (!fine.split(cc, core.bodies, core.awake, core.awakeCount, core.activeJoints)) return 1;
+  moveFineConstraints(cc, fine.fine, fine.constraints, factor);
   return factor;
 }
 
 /**
  * The soft step of the islands split off by splitFineIslands, with `subSteps` substeps: contacts only
- * (they have no joints), in the constraints' range from `fineStart`.
+ * (they have no joints). Their constraints go back to the world's list afterwards.
  */
-function solveFineIslands(core: WorldCore, dt: number, subSteps: number): void {
+function solveFineIslands(core: WorldCore, dt: number, subSteps: number, factor: number): void {
   const h = dt / subSteps;
   const invH = 1 / h;
-  const cc = core.constraints;
   const fine = core.fineIslands;
+  const cc = fine.constraints;
   const bodies = core.bodies;
   const state = bodies.state;
   const settings = core.settings;
-  if (cc.fineSoftnessStep !== h) {
-    setSoftnessFor(cc, true, h);
-    cc.fineSoftnessStep = h;
-  }
-  const soft = cc.fineSoftness;
-  const from = cc.fineStart;
-  const to = cc.count;
+  setSoftnessFor(cc, h);
   prepareVelocityUpdate(bodies, fine.bodies, fine.count, h, core.gravityX, core.gravityY, fine.update);
   for (let i = 0; i < subSteps; i++) {
     integrateVelocities(bodies, fine.bodies, fine.count, fine.update, h, settings.maxLinearSpeed);
-    warmStartContacts(cc, state, from, to);
-    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed, soft, from, to);
+    warmStartContacts(cc, state);
+    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
     integratePositions(bodies, fine.bodies, fine.count, h, settings.maxLinearSpeed, i === subSteps - 1);
-    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed, soft, from, to);
-    solveSupports(cc, state, invH, cc.fineSupportStart, cc.supportCount);
+    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
+    solveSupports(cc, state, invH);
   }
+  restoreFineConstraints(core.constraints, cc, factor);
 }
 
 /**
@@ -248,9 +242,6 @@ export function solve(core: WorldCore, dt: number): void {
   // the bodies and constraints stepped here: all but those of the islands stepped finer
   const awake = fineFactor > 1 ? core.fineIslands.coarse : core.awake;
   const awakeCount = fineFactor > 1 ? core.fineIslands.coarseCount : core.awakeCount;
-  const contactEnd = cc.fineStart;
-  const supportEnd = cc.fineSupportStart;
-  const contactSoft = cc.softness;
   const settings = core.settings;
   // the tree projects again after the others only if they act on its bodies
   const coupled = tree.isCoupled(cc.ids, cc.count);
@@ -262,7 +253,7 @@ export function solve(core: WorldCore, dt: number): void {
     integrateVelocities(bodies, awake, awakeCount, update, h, settings.maxLinearSpeed);
     hinges.warmStart(state, ctx.warmSpeedLimit, ctx.warmTurnLimit);
     for (let j = 0; j < iterativeCount; j++) iterative[j].warmStartGuarded(ctx);
-    warmStartContacts(cc, state, 0, contactEnd);
+    warmStartContacts(cc, state);
     // positions change only in integratePositions: the last substep's relax factorization still holds
     if (i === 0) tree.factor(ctx, true, false);
     tree.project(state, treeBias, true);
@@ -272,7 +263,7 @@ export function solve(core: WorldCore, dt: number): void {
       // a row weighed with the tree's mass moved only its own two bodies: the tree carries it on
       if (iterative[j].treeAxialMass > 0) tree.project(state, treeBias, false);
     }
-    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed, contactSoft, 0, contactEnd);
+    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, treeBias, false);
     integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed, i === subSteps - 1);
     tree.factor(ctx, false, i === subSteps - 1);
@@ -285,11 +276,11 @@ export function solve(core: WorldCore, dt: number): void {
       iterative[j].solve(ctx, false);
       if (iterative[j].treeAxialMass > 0) tree.project(state, 0, false);
     }
-    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed, contactSoft, 0, contactEnd);
+    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, 0, false);
-    if (supportEnd > 0) solveSupports(cc, state, invH, 0, supportEnd);
+    if (cc.supportCount > 0) solveSupports(cc, state, invH);
   }
-  if (fineFactor > 1) solveFineIslands(core, dt, fineFactor * subSteps);
+  if (fineFactor > 1) solveFineIslands(core, dt, fineFactor * subSteps, fineFactor);
   hinges.store(ctx);
   tree.store(ctx);
   applyRestitution(cc, state, settings.restitutionThreshold);
