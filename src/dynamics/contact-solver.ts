@@ -189,7 +189,7 @@ export function setContactSoftness(
 ): void {
   setSoftness(cc.softness, 0, contactSoft, contactHertz, h);
   setSoftness(cc.softness, ANCHORED_SOFTNESS, anchoredSoft, 2 * contactHertz, h);
-  cc.levelCaps[0] = anchoredSoft.impulseScale > 0 ? levelCap(contactHertz, h) : 0;
+  cc.levelCaps[0] = contactSoft.impulseScale > 0 ? levelCap(contactHertz, h) : 0;
   cc.levelCaps[1] = anchoredSoft.impulseScale > 0 ? levelCap(2 * contactHertz, h) : 0;
 }
 
@@ -611,7 +611,7 @@ export function solveContacts(
 /**
  * Stiffens the contacts that carry a body much heavier than their own two, and lists them for
  * solveSupports. Called after prepareContacts when `heavyPair` is set (no contact carries such a body
- * otherwise), with the world's gravity.
+ * otherwise), with the world's gravity, and `supportCount` and `levelExcess` at 0.
  *
  * A soft contact is a spring sized to the effective mass m of its own two bodies: it holds a weight W
  * at an overlap of about W / (m w^2), so under a body many times heavier than both (a 1,000 kg box on
@@ -619,7 +619,8 @@ export function solveContacts(
  * stack of 1 kg boxes under 1,000 kg folded into itself. A contact whose upper body carries a mass M
  * (LoadPaths: the heaviest of the upper body and what rests on it) of four or more times m is made 4^L
  * times stiffer, 4^L the largest power of 4 up to M / m: sized to the load, as the contact between two
- * such bodies would be (within the limit that setSoftness explains).
+ * such bodies would be. Only as far as half the substep rate, though (see setSoftness): `levelExcess`
+ * says how many levels the stiffest one lacks, and FineIslands steps its island with finer substeps.
  *
  * Such a contact still carries its load only as fast as Gauss-Seidel passes it down: a light body
  * between two of them moves each contact's impulses on by its own small mass, one sweep at a time, and
@@ -640,8 +641,6 @@ export function stiffenLoadedContacts(
   gy: number,
 ): void {
   const g = Math.sqrt(gx * gx + gy * gy);
-  cc.supportCount = 0;
-  cc.levelExcess = 0;
   if (g === 0) return;
   orientContacts(cc, gx / g, gy / g);
   const paths = cc.loadPaths;
