@@ -17,14 +17,20 @@ import {
 import { BodyFlag, BodyKind, type BodyStore, S } from './body-store';
 import {
   applyRestitution,
+  type ContactConstraints,
+  moveFineConstraints,
   prepareContacts as prepareContactConstraints,
+  restoreFineConstraints,
   setContactSoftness,
   solveContacts,
+  solveSupports,
+  stiffenLoadedContacts,
   storeImpulses,
   warmStartContacts,
 } from './contact-solver';
 import { ContactFlag, type ContactStore } from './contact-store';
 import { deferBullet, solveBullets, solveContinuous, sweepStart } from './continuous';
+import { MAX_FINE_FACTOR } from './fine-islands';
 import type { GraphColoring } from './graph-color';
 import type { Joint } from './joints/joint';
 import { ShapeFlag } from './shape-store';
@@ -142,27 +148,76 @@ function addTouchingContacts(contacts: ContactStore, bodies: BodyStore, coloring
   }
 }
 
+/** Sets the softness of the contacts of `cc` for substep `h`, unless it is set for `h` already. */
+function setSoftnessFor(cc: ContactConstraints, h: number): void {
+  if (cc.softnessStep === h) return;
+  cc.softnessStep = h;
+  // a contact spring faster than an eighth of the substep rate makes large piles ring at few
+  // substeps (a base-20 pyramid at 2 substeps breathed +-60 mm at 3 Hz for good with a quarter)
+  const contactHertz = Math.min(CONTACT_HERTZ, 0.125 / h);
+  setContactSoftness(
+    cc,
+    makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness),
+    makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness),
+    contactHertz,
+    h,
+  );
+}
+
 /** Builds one constraint per touching solid contact that has an awake body. */
 function prepareContacts(core: WorldCore, h: number): void {
   const contacts = core.contacts;
   const bodies = core.bodies;
   const cc = core.constraints;
-  if (cc.softnessStep !== h) {
-    // a contact spring faster than an eighth of the substep rate makes large piles ring at few
-    // substeps (a base-20 pyramid at 2 substeps breathed +-60 mm at 3 Hz for good with a quarter)
-    const contactHertz = Math.min(CONTACT_HERTZ, 0.125 / h);
-    setContactSoftness(
-      cc,
-      makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness),
-      makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness),
-    );
-    cc.softnessStep = h;
-  }
+  setSoftnessFor(cc, h);
   const coloring = core.coloring;
   coloring.begin(bodies.capacity, contacts.liveCount);
   addTouchingContacts(contacts, bodies, coloring);
   const total = coloring.finish();
   prepareContactConstraints(cc, coloring.order, total, contacts, bodies, core.shapes);
+  cc.supportCount = 0;
+  cc.levelExcess = 0;
+  if (cc.heavyPair) stiffenLoadedContacts(cc, bodies, core.gravityX, core.gravityY);
+}
+
+/**
+ * Whether some islands are stepped with finer substeps (see FineIslands): those whose loads want
+ * contacts stiffer than the world's substeps allow, by 2^levelExcess times the substeps (at most
+ * MAX_FINE_FACTOR). Lists their bodies apart and moves their constraints to FineIslands.constraints.
+ */
+function splitFineIslands(core: WorldCore): number {
+  const cc = core.constraints;
+  if (cc.levelExcess === 0) return 1;
+  const factor = Math.min(MAX_FINE_FACTOR, 2 ** cc.levelExcess);
+  const fine = core.fineIslands;
+  if (!fine.split(cc, core.bodies, core.awake, core.awakeCount, core.activeJoints)) return 1;
+  moveFineConstraints(cc, fine.fine, fine.constraints, factor);
+  return factor;
+}
+
+/**
+ * The soft step of the islands split off by splitFineIslands, with `subSteps` substeps: contacts only
+ * (they have no joints). Their constraints go back to the world's list afterwards.
+ */
+function solveFineIslands(core: WorldCore, dt: number, subSteps: number, factor: number): void {
+  const h = dt / subSteps;
+  const invH = 1 / h;
+  const fine = core.fineIslands;
+  const cc = fine.constraints;
+  const bodies = core.bodies;
+  const state = bodies.state;
+  const settings = core.settings;
+  setSoftnessFor(cc, h);
+  prepareVelocityUpdate(bodies, fine.bodies, fine.count, h, core.gravityX, core.gravityY, fine.update);
+  for (let i = 0; i < subSteps; i++) {
+    integrateVelocities(bodies, fine.bodies, fine.count, fine.update, h, settings.maxLinearSpeed);
+    warmStartContacts(cc, state);
+    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
+    integratePositions(bodies, fine.bodies, fine.count, h, settings.maxLinearSpeed, i === subSteps - 1);
+    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
+    solveSupports(cc, state, invH);
+  }
+  restoreFineConstraints(core.constraints, cc, factor);
 }
 
 /**
@@ -183,11 +238,13 @@ export function solve(core: WorldCore, dt: number): void {
   const iterativeCount = iterative.length;
   const jointSoft = ctx.jointSoftness;
   prepareContacts(core, h);
+  const fineFactor = splitFineIslands(core);
   const bodies = core.bodies;
   const state = bodies.state;
   const cc = core.constraints;
-  const awake = core.awake;
-  const awakeCount = core.awakeCount;
+  // the bodies and constraints stepped here: all but those of the islands stepped finer
+  const awake = fineFactor > 1 ? core.fineIslands.coarse : core.awake;
+  const awakeCount = fineFactor > 1 ? core.fineIslands.coarseCount : core.awakeCount;
   const settings = core.settings;
   // the tree projects again after the others only if they act on its bodies
   const coupled = tree.isCoupled(cc.ids, cc.count);
@@ -220,7 +277,9 @@ export function solve(core: WorldCore, dt: number): void {
     for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, false);
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
     if (coupled) tree.project(state, 0, false);
+    if (cc.supportCount > 0) solveSupports(cc, state, invH);
   }
+  if (fineFactor > 1) solveFineIslands(core, dt, fineFactor * subSteps, fineFactor);
   hinges.store(ctx);
   tree.store(ctx);
   applyRestitution(cc, state, settings.restitutionThreshold);

@@ -20,6 +20,7 @@ import { BodyFlag, BodyKind, BodyStore } from './body-store';
 import { ContactConstraints } from './contact-solver';
 import { ContactFlag, ContactStore } from './contact-store';
 import { EventBuffers } from './event-buffers';
+import { FineIslands } from './fine-islands';
 import { GraphColoring } from './graph-color';
 import { Islands } from './island';
 import { HingeBatch } from './joints/hinge-batch';
@@ -64,6 +65,7 @@ export class WorldCore implements PairFilter {
   readonly islands = new Islands();
   readonly constraints = new ContactConstraints();
   readonly coloring = new GraphColoring();
+  readonly fineIslands = new FineIslands();
   readonly events = new EventBuffers();
   readonly newPairs = new IntList(256);
   /** awake non-static bodies of the current step, by ascending slot */

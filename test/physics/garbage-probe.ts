@@ -77,6 +77,14 @@ const scenes: Record<string, () => World> = {
     return world;
   },
   'hinge net': () => hingeNetWorld(20),
+  // the heavy-load passes: stiffened contacts, supports, an island stepped with finer substeps
+  'loaded pyramid': () => {
+    const { world } = groundWorld({ enableSleep: false });
+    pyramid(world, 10);
+    const load = world.createBody({ type: 'dynamic', position: { x: 0, y: 10.5 } });
+    load.createShape(Shape.box(0.5, 0.5), { density: 1000 });
+    return world;
+  },
 };
 
 const name = process.argv[2] ?? 'pyramid';
