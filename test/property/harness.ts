@@ -524,11 +524,13 @@ export class Harness {
     if (this.eventsPending) this.readEventArrays();
     const w = this.world;
     const subSteps = w.subSteps;
-    this.markStep();
+    this.beginStep();
     this.awaitingDelivery = true;
     const quiet = this.handlers.every((h) => !h.active || h.budget <= 0);
     const poses = this.options.check && quiet && dt > 0 ? this.posesBefore() : undefined;
     const r = this.guard(`step(${dt})`, () => w.step(dt));
+    // no event delivered: the step solved all the same, what was destroyed before it is gone for good
+    if (this.awaitingDelivery) this.forgetDestroyed();
     // a step from a preStep handler: the outer step's own solve and events are still to come
     if (this.handlerEvent === 'preStep') this.awaitingDelivery = true;
     if (!r.ok) return;
@@ -539,22 +541,27 @@ export class Harness {
 
   /**
    * Notes the handles that exist as a step solves: its events may name those, and the ones destroyed
-   * since. Called as a step begins and again when its first event is delivered (preStep handlers may
-   * have changed the world in between).
+   * after it (until the next step solves, world.events still holds its events, also in the next
+   * step's preStep handlers). Called as a step begins, and again when its first event is delivered:
+   * preStep handlers may have changed the world in between.
    */
-  private markStep(): void {
+  private beginStep(): void {
     this.stepCounts = { bodies: this.bodies.length, shapes: this.shapes.length };
     this.createdInPreStep.clear();
+    this.hitThreshold = this.world.hitEventThreshold;
+  }
+
+  private forgetDestroyed(): void {
     this.destroyedSinceStep.bodies.clear();
     this.destroyedSinceStep.shapes.clear();
-    this.hitThreshold = this.world.hitEventThreshold;
   }
 
   /** Called by the event recorders: the first event of a step's delivery. */
   private delivering(): void {
     if (!this.awaitingDelivery) return;
     this.awaitingDelivery = false;
-    this.markStep();
+    this.beginStep();
+    this.forgetDestroyed();
   }
 
   /** World poses of kinematic and static bodies before a step with no handler that could move them. */

@@ -110,7 +110,7 @@ const bodyCall =
   (h, bad) => {
     const body = h.liveBody(bad);
     if (body)
-      h.expectRejected(`body.${name}(${String(of(list, bad))})`, () => call(body, of(list, bad) as never));
+      h.expectRejected(`body.${name}(${safe(of(list, bad))})`, () => call(body, of(list, bad) as never));
   };
 
 const shapeCall =
@@ -118,7 +118,7 @@ const shapeCall =
   (h, bad) => {
     const shape = h.liveShape(bad);
     if (shape)
-      h.expectRejected(`shape.${name} = ${String(of(list, bad))}`, () => call(shape, of(list, bad) as never));
+      h.expectRejected(`shape.${name} = ${safe(of(list, bad))}`, () => call(shape, of(list, bad) as never));
   };
 
 const worldCall =
