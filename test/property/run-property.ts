@@ -17,7 +17,13 @@ export async function checkProperty<T>(
   for (let k = 0; k < seedCount; k++) {
     const seed = (firstSeed + k) | 0;
     const started = performance.now();
-    const details = fc.check(fc.property(arbitrary, predicate), { seed, numRuns });
+    let cases = 0;
+    const property = fc.asyncProperty(arbitrary, async (value) => {
+      predicate(value);
+      // let the test runner's worker talk to the main process now and then (its calls time out)
+      if (++cases % 25 === 0) await new Promise((resolve) => setImmediate(resolve));
+    });
+    const details = await fc.check(property, { seed, numRuns });
     if (details.failed) {
       const error = details.errorInstance;
       const cause = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
@@ -32,8 +38,6 @@ export async function checkProperty<T>(
       const seconds = ((performance.now() - started) / 1000).toFixed(1);
       console.log(`${name}: seed ${seed}: ${details.numRuns} cases passed (${seconds} s)`);
     }
-    // let the test runner's worker talk to the main process between seeds
-    await new Promise((resolve) => setImmediate(resolve));
   }
   if (failures.length > 0) throw new Error(failures.join('\n\n'));
 }
