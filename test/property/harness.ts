@@ -286,9 +286,32 @@ export class Harness {
           this.killBody(this.bodyIndex.get(body)!);
         return;
       }
-      case 'createJoint':
-        this.createJoint(op.a, op.b, op.joint);
+      case 'createJoint': {
+        const a = this.pickBody(op.a);
+        const b = this.pickBody(op.b);
+        if (a && b) this.createJoint(a, b, op.joint);
         return;
+      }
+      case 'network': {
+        const made: Body[] = [];
+        for (let i = 0; i < op.count; i++) {
+          const spec = { type: 'dynamic' as const, position: { x: (i - op.count / 2) * 0.6, y: 2 } };
+          const r = this.guard('createBody', () => this.world.createBody(spec));
+          if (!r.ok) return;
+          const b = this.addBody(r.value);
+          made.push(r.value);
+          this.createShape(
+            b,
+            { kind: 'box', hw: 0.25, hh: 0.1, center: undefined, angle: undefined },
+            { density: op.density },
+          );
+        }
+        // index 0 of the links' picks is the session's first body (the ground), the others the new ones
+        const ends = [this.bodies[0], ...made];
+        for (const link of op.links)
+          this.createJoint(ends[link.a % ends.length], ends[link.b % ends.length], link.joint);
+        return;
+      }
       case 'destroyJoint': {
         const joint = this.pickJoint(op.joint);
         if (!joint) return;
@@ -451,10 +474,7 @@ export class Harness {
     if (r.ok) this.addShape(r.value, b);
   }
 
-  private createJoint(pa: number, pb: number, spec: JointSpec): void {
-    const bodyA = this.pickBody(pa);
-    const bodyB = this.pickBody(pb);
-    if (!bodyA || !bodyB) return;
+  private createJoint(bodyA: Body, bodyB: Body, spec: JointSpec): void {
     const def = jointDef(spec, bodyA, bodyB);
     const a = this.bodyIndex.get(bodyA)!;
     const b = spec.type === 'mouse' ? a : this.bodyIndex.get(bodyB)!;

@@ -140,6 +140,7 @@ export type Op =
   | { op: 'destroyShape'; shape: number }
   | { op: 'destroyBody'; body: number }
   | { op: 'createJoint'; a: number; b: number; joint: JointSpec }
+  | { op: 'network'; count: number; density: number; links: { a: number; b: number; joint: JointSpec }[] }
   | { op: 'destroyJoint'; joint: number }
   | { op: 'setJoint'; joint: number; setter: number; n1: number; n2: number; n3: number; flag: boolean; v: V }
   | { op: 'setTransform'; body: number; which: 'position' | 'angle' | 'both'; position: V; angle: number }
@@ -346,6 +347,16 @@ function worldOps(nested: fc.Arbitrary<Op>): fc.Arbitrary<Op> {
     {
       weight: 5,
       arbitrary: fc.record({ op: fc.constant('createJoint' as const), a: pick, b: pick, joint: jointSpec }),
+    },
+    {
+      // a row of boxes (1 or 1000 kg/m²) joined to each other and to the first body (the ground) at random
+      weight: 2,
+      arbitrary: fc.record({
+        op: fc.constant('network' as const),
+        count: fc.integer({ min: 2, max: 12 }),
+        density: fc.constantFrom(1, 1, 1000),
+        links: fc.array(fc.record({ a: pick, b: pick, joint: jointSpec }), { minLength: 1, maxLength: 16 }),
+      }),
     },
     { weight: 1, arbitrary: fc.record({ op: fc.constant('destroyJoint' as const), joint: pick }) },
     {
