@@ -198,11 +198,16 @@ export function collideCirclePolygon(
       const vy = vertex === 1 ? v1y : v2y;
       const dx = cx - vx;
       const dy = cy - vy;
-      distance = Math.sqrt(dx * dx + dy * dy);
-      ux = dx / distance;
-      uy = dy / distance;
-      px = vx;
-      py = vy;
+      const vertexDistance = Math.sqrt(dx * dx + dy * dy);
+      // a centre within rounding of the vertex (the squares of its offsets underflow to 0) gives no
+      // direction: it keeps the face's normal
+      if (vertexDistance > 0) {
+        distance = vertexDistance;
+        ux = dx / distance;
+        uy = dy / distance;
+        px = vx;
+        py = vy;
+      }
     }
   }
   const separation = distance - radius;
