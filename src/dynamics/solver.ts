@@ -427,7 +427,10 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     const vx = state[s + S.VX];
     const vy = state[s + S.VY];
     const w = state[s + S.W];
-    if (enableSleep && (colFlags[b] & BodyFlag.ALLOW_SLEEP) !== 0) {
+    if (colKind[b] === BodyKind.KINEMATIC && (vx !== 0 || vy !== 0 || w !== 0)) {
+      // a kinematic body moves as told for as long as it is told: even slowly, even with no shape
+      colSleepTime[b] = 0;
+    } else if (enableSleep && (colFlags[b] & BodyFlag.ALLOW_SLEEP) !== 0) {
       const speed = Math.sqrt(vx * vx + vy * vy) + colMaxExtent[b] * Math.abs(w);
       // and how fast it moved: a body pushed out of an overlap or back inside a joint limit ends each
       // substep at rest (the relax pass takes back the push's velocity) while it still moves

@@ -13,6 +13,19 @@ describe('kinematic bodies', () => {
     expect(k.angle).toBeCloseTo(0.5, 9);
   });
 
+  it('keep moving however slowly they are told to, with or without a shape (they never fall asleep)', () => {
+    const world = new World();
+    // 1 cm/s and 0.01 rad/s: both below the 5 cm/s at which a dynamic body would sleep
+    const lift = world.createBody({ type: 'kinematic', linearVelocity: { x: 0, y: 0.01 } });
+    lift.createShape(Shape.box(1, 0.1));
+    const spinner = world.createBody({ type: 'kinematic', angularVelocity: 0.01 });
+    run(world, 10);
+    expect(lift.isAwake).toBe(true);
+    expect(lift.position.y).toBeCloseTo(0.1, 9);
+    expect(spinner.isAwake).toBe(true);
+    expect(spinner.angle).toBeCloseTo(0.1, 9);
+  });
+
   it('a paddle turning at 1 rad/s carries a box resting on it', () => {
     const world = new World();
     const paddle = world.createBody({ type: 'kinematic' });
