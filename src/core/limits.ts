@@ -27,6 +27,11 @@ export const Limits = {
    * limits by the step (see Settings.maxLinearSpeed and MAX_ROTATION_PER_SUBSTEP)
    */
   RATE: 1e9,
+  /**
+   * spring frequencies other than 0 (a period of 11.6 days): a lower one makes the spring's terms
+   * (2 pi hertz times the substep) underflow to 0, and an undamped spring divide by them
+   */
+  MIN_HERTZ: 1e-6,
   /** densities other than 0 (kg per square world unit) */
   MIN_DENSITY: 1e-12,
   MAX_DENSITY: 1e12,
@@ -108,6 +113,11 @@ export function checkRate(argument: string, value: unknown): number {
 /** As checkRate, not negative. */
 export function checkNonNegativeRate(argument: string, value: unknown): number {
   return checkRange(argument, value, 0, Limits.RATE);
+}
+
+/** A spring frequency in hertz: 0 (no spring) or in [Limits.MIN_HERTZ, Limits.RATE]. */
+export function checkHertz(argument: string, value: unknown): number {
+  return checkZeroOrRange(argument, value, Limits.MIN_HERTZ, Limits.RATE);
 }
 
 /** A force, torque or impulse (or a cap on one) that may be negative. */

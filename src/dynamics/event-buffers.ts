@@ -36,6 +36,15 @@ export class EventBuffers {
    * begins' (A, B), the ends', the sensor begins', the sensor ends', the hits'.
    */
   readonly generations = new IntList();
+  /**
+   * Ends of pairs dropped between steps (a shape's filter or sensor flag or a body's type changed, a
+   * joint forbade the collision): shape A, its generation, shape B, its generation per end. They are
+   * reported with the next step (see takePending), so that a pair found again in that step ends
+   * before it begins again.
+   */
+  readonly pendingContactEnd = new IntList();
+  /** as pendingContactEnd: sensor shape, its generation, visitor shape, its generation */
+  readonly pendingSensorEnd = new IntList();
 
   clear(): void {
     this.contactBegin.clear();
@@ -50,28 +59,41 @@ export class EventBuffers {
     const a = contacts.shapeA[c];
     const b = contacts.shapeB[c];
     if ((contacts.flags[c] & ContactFlag.SENSOR) !== 0) {
-      this.recordSensor(this.sensorBegin, shapes, a, b);
+      this.recordSensor(this.sensorBegin, shapes, a, b, false);
     } else if (((shapes.flags[a] | shapes.flags[b]) & ShapeFlag.CONTACT_EVENTS) !== 0) {
       this.contactBegin.push(c);
       this.contactBegin.push2(a, b);
     }
   }
 
-  recordEnd(contacts: ContactStore, c: number, shapes: ShapeStore): void {
+  /** Records the end of a touching contact; `between` when no step is running (see pendingContactEnd). */
+  recordEnd(contacts: ContactStore, c: number, shapes: ShapeStore, between: boolean): void {
     const a = contacts.shapeA[c];
     const b = contacts.shapeB[c];
     if ((contacts.flags[c] & ContactFlag.SENSOR) !== 0) {
-      this.recordSensor(this.sensorEnd, shapes, a, b);
+      if (between) this.recordSensor(this.pendingSensorEnd, shapes, a, b, true);
+      else this.recordSensor(this.sensorEnd, shapes, a, b, false);
     } else if (((shapes.flags[a] | shapes.flags[b]) & ShapeFlag.CONTACT_EVENTS) !== 0) {
-      this.contactEnd.push2(a, b);
+      if (between) pushStamped(this.pendingContactEnd, shapes, a, b);
+      else this.contactEnd.push2(a, b);
     }
   }
 
-  private recordSensor(list: IntList, shapes: ShapeStore, a: number, b: number): void {
+  private recordSensor(list: IntList, shapes: ShapeStore, a: number, b: number, stamped: boolean): void {
     const sensor = (shapes.flags[a] & ShapeFlag.SENSOR) !== 0 ? a : b;
     const visitor = sensor === a ? b : a;
-    if ((shapes.flags[sensor] & shapes.flags[visitor] & ShapeFlag.SENSOR_EVENTS) !== 0)
-      list.push2(sensor, visitor);
+    if ((shapes.flags[sensor] & shapes.flags[visitor] & ShapeFlag.SENSOR_EVENTS) === 0) return;
+    if (stamped) pushStamped(list, shapes, sensor, visitor);
+    else list.push2(sensor, visitor);
+  }
+
+  /**
+   * Called when a step begins, after clear(): the ends recorded since the last step become this
+   * step's first ends, less those naming a shape destroyed since (whose pairs need no end).
+   */
+  takePending(shapes: ShapeStore): void {
+    takeStamped(this.pendingContactEnd, this.contactEnd, shapes);
+    takeStamped(this.pendingSensorEnd, this.sensorEnd, shapes);
   }
 
   recordHit(a: number, b: number, px: number, py: number, nx: number, ny: number, speed: number): void {
@@ -136,4 +158,28 @@ function stampGenerations(
   for (let i = first; i < list.length; i += stride) {
     out.push2(generation[list.data[i]] | 0, generation[list.data[i + 1]] | 0);
   }
+}
+
+/** Appends shapes `a` and `b` with their generations. */
+function pushStamped(list: IntList, shapes: ShapeStore, a: number, b: number): void {
+  list.push2(a, shapes.generation[a] | 0);
+  list.push2(b, shapes.generation[b] | 0);
+}
+
+/** Moves the pairs of `from` (stamped by pushStamped) whose shapes are still the same into `to`. */
+function takeStamped(from: IntList, to: IntList, shapes: ShapeStore): void {
+  const d = from.data;
+  for (let i = 0; i < from.length; i += 4) {
+    const a = d[i];
+    const b = d[i + 2];
+    if (
+      shapes.alive[a] !== 0 &&
+      shapes.alive[b] !== 0 &&
+      (shapes.generation[a] | 0) === d[i + 1] &&
+      (shapes.generation[b] | 0) === d[i + 3]
+    ) {
+      to.push2(a, b);
+    }
+  }
+  from.clear();
 }

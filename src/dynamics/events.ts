@@ -96,7 +96,11 @@ const EVENT_NAMES = [
  * that took over its slot is never named instead. For that, the World calls `settle()` before it
  * destroys a shape, so that the record is made into objects while its handles still exist.
  * Sleep and wake that happen between steps (setAwake, setters) are reported with the next step; a
- * body destroyed before then is left out of them.
+ * body destroyed before then is left out of them. So are the ends of touching pairs dropped between
+ * steps (a shape's filter or sensor flag or its body's type changed, a joint forbade the collision),
+ * unless a shape of the pair is destroyed first; the handlers for ends run before those for begins,
+ * so that every pair's begins and ends alternate. Destroying a body or shape ends its pairs without
+ * events (its handles read isValid === false).
  */
 export class EventDispatcher {
   private readonly handlers = new Map<string, Handler[]>();
@@ -145,11 +149,13 @@ export class EventDispatcher {
     for (const list of this.handlers.values()) if (list.length > 0) any = true;
     if (!any) return;
     const events = this.current();
-    this.run('contactBegin', events.contactBegin);
+    // ends first: a pair dropped between steps (a filter changed, a joint created) and found again in
+    // this step has both its end and its new begin in this record, in that order
     this.run('contactEnd', events.contactEnd);
+    this.run('contactBegin', events.contactBegin);
     this.run('contactHit', events.contactHit);
-    this.run('sensorBegin', events.sensorBegin);
     this.run('sensorEnd', events.sensorEnd);
+    this.run('sensorBegin', events.sensorBegin);
     this.run('sleep', events.sleep);
     this.run('wake', events.wake);
   }

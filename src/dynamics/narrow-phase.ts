@@ -267,7 +267,7 @@ export function updateContacts(core: WorldCore): void {
       }
     } else {
       contactFlags[c] = flags & ~ContactFlag.TOUCHING;
-      events.recordEnd(contacts, c, shapes);
+      events.recordEnd(contacts, c, shapes, false);
     }
   }
 }

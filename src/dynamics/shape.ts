@@ -60,13 +60,13 @@ export function checkFilter(argument: string, filter: unknown): Filter {
   if (typeof filter !== 'object' || filter === null) fail(argument, filter, 'an object');
   checkKnownKeys(argument, filter, FILTER_KEYS);
   const f = filter as Partial<Filter>;
-  const groupIndex = f.groupIndex ?? 0;
+  const groupIndex = f.groupIndex === undefined ? 0 : f.groupIndex;
   if (!Number.isInteger(groupIndex) || groupIndex < -0x80000000 || groupIndex > 0x7fffffff) {
     fail(`${argument}.groupIndex`, groupIndex, 'a 32-bit integer');
   }
   return {
-    categoryBits: checkBits(`${argument}.categoryBits`, f.categoryBits ?? 1),
-    maskBits: checkBits(`${argument}.maskBits`, f.maskBits ?? 0xffffffff),
+    categoryBits: checkBits(`${argument}.categoryBits`, f.categoryBits === undefined ? 1 : f.categoryBits),
+    maskBits: checkBits(`${argument}.maskBits`, f.maskBits === undefined ? 0xffffffff : f.maskBits),
     groupIndex,
   };
 }
@@ -82,7 +82,8 @@ export interface ResolvedShapeDef {
 }
 
 export function resolveShapeDef(def: ShapeDef | undefined): ResolvedShapeDef {
-  const d = def ?? {};
+  // undefined is "not given"; null, like any other value that is not an object, is refused
+  const d = def === undefined ? {} : def;
   if (typeof d !== 'object' || d === null) fail('def', def, 'an object');
   checkKnownKeys('def', d, SHAPE_DEF_KEYS);
   let flags = 0;
@@ -201,10 +202,16 @@ export class ShapeHandle {
   set filter(value: Partial<Filter>) {
     const s = this.unlocked();
     const f = checkFilter('filter', value);
-    const core = this.body.world.core;
-    core.shapes.categoryBits[s] = f.categoryBits;
-    core.shapes.maskBits[s] = f.maskBits;
-    core.shapes.groupIndex[s] = f.groupIndex;
+    const shapes = this.body.world.core.shapes;
+    const category = shapes.categoryBits[s];
+    const mask = shapes.maskBits[s];
+    const group = shapes.groupIndex[s];
+    shapes.categoryBits[s] = f.categoryBits;
+    shapes.maskBits[s] = f.maskBits;
+    shapes.groupIndex[s] = f.groupIndex;
+    // the same filter again changes nothing: its contacts go on (no end and begin, no wake)
+    if (shapes.categoryBits[s] === category && shapes.maskBits[s] === mask && shapes.groupIndex[s] === group)
+      return;
     this.resetContacts(s);
   }
 
@@ -216,6 +223,7 @@ export class ShapeHandle {
     const s = this.unlocked();
     checkBoolean('isSensor', value);
     const shapes = this.body.world.core.shapes;
+    if (value === ((shapes.flags[s] & ShapeFlag.SENSOR) !== 0)) return;
     if (value) shapes.flags[s] |= ShapeFlag.SENSOR;
     else shapes.flags[s] &= ~ShapeFlag.SENSOR;
     this.resetContacts(s);
@@ -235,7 +243,7 @@ export class ShapeHandle {
 
   private resetContacts(s: number): void {
     const core = this.body.world.core;
-    core.destroyShapeContacts(s, true);
+    core.destroyShapeContacts(s, true, true);
     core.broadPhase.bufferMove(core.shapes.proxyKey[s]);
   }
 

@@ -299,7 +299,7 @@ export class WorldCore implements PairFilter {
     const bodyA = contacts.bodyA[c];
     const bodyB = contacts.bodyB[c];
     if (report && (contacts.flags[c] & ContactFlag.TOUCHING) !== 0) {
-      this.events.recordEnd(contacts, c, this.shapes);
+      this.events.recordEnd(contacts, c, this.shapes, !this.locked);
     }
     bodies.contactHead[bodyA] = contacts.unlinkEdge(c, 0, bodies.contactHead[bodyA]);
     bodies.contactHead[bodyB] = contacts.unlinkEdge(c, 1, bodies.contactHead[bodyB]);
@@ -307,8 +307,11 @@ export class WorldCore implements PairFilter {
     contacts.free(c);
   }
 
-  /** Destroys every contact of one shape (its filter, sensor flag or body changed, or it is going away). */
-  destroyShapeContacts(shape: number, wakeOthers: boolean): void {
+  /**
+   * Destroys every contact of one shape: its filter, sensor flag or body type changed (`report`: the
+   * touching ones report their ends), or it is going away (no ends: its pairs are over with it).
+   */
+  destroyShapeContacts(shape: number, wakeOthers: boolean, report: boolean): void {
     const contacts = this.contacts;
     const b = this.shapes.body[shape];
     let e = this.bodies.contactHead[b];
@@ -320,7 +323,7 @@ export class WorldCore implements PairFilter {
           this.wake(contacts.bodyA[c]);
           this.wake(contacts.bodyB[c]);
         }
-        this.destroyContact(c, false);
+        this.destroyContact(c, report);
       }
       e = next;
     }

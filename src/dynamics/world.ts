@@ -191,7 +191,7 @@ export class World {
     checkRoom('bodies', this.core.bodies.liveCount);
     if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
     checkKnownKeys('def', def, BODY_DEF_KEYS);
-    const type = def.type ?? 'static';
+    const type = def.type === undefined ? 'static' : def.type;
     if (!BODY_TYPES.includes(type)) fail('type', type, "'static', 'kinematic' or 'dynamic'");
     const position = def.position === undefined ? { x: 0, y: 0 } : checkCoordinates('position', def.position);
     const angle = def.angle === undefined ? 0 : checkAngle('angle', def.angle);
@@ -397,7 +397,7 @@ export class World {
     const s = shape.check();
     this.dispatcher.settle();
     const core = this.core;
-    core.destroyShapeContacts(s, true);
+    core.destroyShapeContacts(s, true, false);
     core.destroyProxy(s);
     const shapes = core.shapes;
     // unlink from the body's list
@@ -434,7 +434,7 @@ export class World {
     core.wakeTouching(b);
     core.islands.remove(bodies, b);
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-      core.destroyShapeContacts(s, true);
+      core.destroyShapeContacts(s, true, true);
       core.destroyProxy(s);
     }
     bodies.kind[b] = kind;
@@ -495,6 +495,7 @@ export class World {
     this.dispatcher.emitStep('preStep', dt);
     core.locked = true;
     core.events.clear();
+    core.events.takePending(core.shapes);
     try {
       createNewContacts(core);
       updateContacts(core);

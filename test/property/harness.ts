@@ -659,7 +659,7 @@ export class Harness {
       if (!(Math.abs(unit - 1) < 1e-6))
         fail(`body #${b} (${body.type}): rotation not unit (c²+s² = ${unit})`);
       if (!Number.isFinite(body.angle)) fail(`body #${b}: angle ${body.angle}`);
-      if (body.type === 'dynamic' && body.isAwake && dt > 0 && !this.touchedByHandlers.has(b)) {
+      if (body.type !== 'static' && body.isAwake && dt > 0 && !this.touchedByHandlers.has(b)) {
         const speed = Math.hypot(v.x, v.y);
         if (speed > maxSpeed)
           fail(`body #${b}: speed ${speed} over the clamp ${SPEED_LIMIT_PER_UNIT * this.units}`);
@@ -707,7 +707,11 @@ export class Harness {
     this.checkDestroyedHandlesRefuse();
   }
 
-  /** A static body stays put; a kinematic one moves by exactly its velocity (or stays put asleep). */
+  /**
+   * A static body stays put; a kinematic one moves by exactly its velocity (or stays put asleep): the
+   * velocity it reads after the step, which is the one it was given unless that was over the speed
+   * limits, where the step scales it down to them (README, Speed limits).
+   */
   private checkDrivenPose(
     b: number,
     body: Body,
@@ -722,15 +726,27 @@ export class Harness {
       if (!same) fail(`${body.type} body #${b} ${before.awake ? '' : 'asleep '}moved in a step`);
       return;
     }
-    const ex = before.c.x + before.v.x * dt;
-    const ey = before.c.y + before.v.y * dt;
+    const v = body.linearVelocity;
+    const w = body.angularVelocity;
+    // the same velocity, or the same direction scaled down (never up, never turned)
+    const k = Math.hypot(v.x, v.y) / Math.hypot(before.v.x, before.v.y);
+    const scaled = v.x === before.v.x && v.y === before.v.y;
+    const parallel =
+      k <= 1 &&
+      Math.abs(v.x - before.v.x * k) <= 1e-9 * Math.abs(before.v.x) &&
+      Math.abs(v.y - before.v.y * k) <= 1e-9 * Math.abs(before.v.y);
+    if (!scaled && !parallel)
+      fail(`kinematic body #${b}: velocity ${show(before.v)} became ${show(v)} in a step`);
+    if (!(w === before.w || (Math.sign(w) === Math.sign(before.w) && Math.abs(w) <= Math.abs(before.w))))
+      fail(`kinematic body #${b}: angular velocity ${before.w} became ${w} in a step`);
+    const ex = before.c.x + v.x * dt;
+    const ey = before.c.y + v.y * dt;
     const tol =
-      1e-9 *
-      (1 + Math.abs(before.c.x) + Math.abs(before.c.y) + (Math.abs(before.v.x) + Math.abs(before.v.y)) * dt);
+      1e-9 * (1 + Math.abs(before.c.x) + Math.abs(before.c.y) + (Math.abs(v.x) + Math.abs(v.y)) * dt);
     if (!(Math.abs(c.x - ex) <= tol && Math.abs(c.y - ey) <= tol))
       fail(`kinematic body #${b}: centre ${show(c)} after a step, expected ${show({ x: ex, y: ey })}`);
     // expected rotation: the old one turned by w dt
-    const turn = before.w * dt;
+    const turn = w * dt;
     if (tame && Math.abs(turn / subSteps) > MAX_TURN_PER_SUBSTEP) return;
     const tc = Math.cos(turn);
     const ts = Math.sin(turn);

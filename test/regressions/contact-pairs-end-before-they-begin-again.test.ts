@@ -46,6 +46,24 @@ describe('a pair that began ends before it begins again', () => {
     expectAlternating(log);
   });
 
+  it('when the filter changes and the pair still collides: it ends and begins again in the next step', () => {
+    const { world, box, log } = touchingPair();
+    box.filter = { categoryBits: 2 };
+    world.step(1 / 60);
+    expect(log).toEqual(['begin pair', 'end pair', 'begin pair']);
+    // and the record of that step holds both
+    expect(world.events.contactEnd).toHaveLength(1);
+    expect(world.events.contactBegin).toHaveLength(1);
+  });
+
+  it('when the filter changes and a shape is destroyed before the next step: no end is owed', () => {
+    const { world, body, box, log } = touchingPair();
+    box.filter = { categoryBits: 2 };
+    body.destroyShape(box);
+    world.step(1 / 60);
+    expect(log).toEqual(['begin pair']);
+  });
+
   it('when isSensor is set to the value it had', () => {
     const { world, box, log } = touchingPair();
     box.isSensor = false;

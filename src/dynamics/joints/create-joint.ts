@@ -3,6 +3,7 @@ import {
   checkAngle,
   checkCoordinate,
   checkCoordinates,
+  checkHertz,
   checkLength,
   checkNonNegativeForce,
   checkNonNegativeRate,
@@ -240,7 +241,7 @@ export function buildJoint(world: World, def: JointDef): Joint {
       targetX: target.x,
       targetY: target.y,
       maxForce: opt(checkNonNegativeForce, 'maxForce', def.maxForce, 1000 * Math.max(mass, 1)),
-      hertz: opt(checkNonNegativeRate, 'hertz', def.hertz, 5),
+      hertz: opt(checkHertz, 'hertz', def.hertz, 5),
       dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 0.7),
     });
   }
@@ -276,7 +277,7 @@ export function buildJoint(world: World, def: JointDef): Joint {
         minLength,
         maxLength,
         enableSpring: bool('enableSpring', def.enableSpring, false),
-        hertz: opt(checkNonNegativeRate, 'hertz', def.hertz, 0),
+        hertz: opt(checkHertz, 'hertz', def.hertz, 0),
         dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 0),
       });
     }
@@ -294,7 +295,7 @@ export function buildJoint(world: World, def: JointDef): Joint {
         motorSpeed: opt(checkRate, 'motorSpeed', def.motorSpeed, 0),
         maxMotorTorque: opt(checkNonNegativeForce, 'maxMotorTorque', def.maxMotorTorque, 0),
         enableSpring: bool('enableSpring', def.enableSpring, false),
-        hertz: opt(checkNonNegativeRate, 'hertz', def.hertz, 0),
+        hertz: opt(checkHertz, 'hertz', def.hertz, 0),
         dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 0),
       });
     }
@@ -313,7 +314,7 @@ export function buildJoint(world: World, def: JointDef): Joint {
         lower,
         upper,
         enableSpring: bool('enableSpring', def.enableSpring, wheel),
-        hertz: opt(checkNonNegativeRate, 'hertz', def.hertz, wheel ? 1 : 0),
+        hertz: opt(checkHertz, 'hertz', def.hertz, wheel ? 1 : 0),
         dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, wheel ? 0.7 : 0),
       };
       if (def.type === 'wheel') {
@@ -334,8 +335,8 @@ export function buildJoint(world: World, def: JointDef): Joint {
       const { la, lb } = anchors(def, a, b);
       return new WeldJoint(world, a, b, la, lb, collide, def.userData, {
         referenceAngle: opt(checkAngle, 'referenceAngle', def.referenceAngle, currentAngle()),
-        linearHertz: opt(checkNonNegativeRate, 'linearHertz', def.linearHertz, 0),
-        angularHertz: opt(checkNonNegativeRate, 'angularHertz', def.angularHertz, 0),
+        linearHertz: opt(checkHertz, 'linearHertz', def.linearHertz, 0),
+        angularHertz: opt(checkHertz, 'angularHertz', def.angularHertz, 0),
         dampingRatio: opt(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 1),
       });
     }

@@ -1,5 +1,5 @@
 import { checkBoolean, FulcrumError } from '../../core/errors';
-import { checkLength, checkNonNegativeRate } from '../../core/limits';
+import { checkHertz, checkLength, checkNonNegativeRate } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -83,7 +83,7 @@ export class DistanceJoint extends Joint {
   }
 
   setSpring(hertz: number, dampingRatio: number): void {
-    checkNonNegativeRate('hertz', hertz);
+    checkHertz('hertz', hertz);
     checkNonNegativeRate('dampingRatio', dampingRatio);
     this.changing();
     this.o.hertz = hertz;

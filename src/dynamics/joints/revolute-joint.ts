@@ -1,5 +1,11 @@
 import { checkBoolean, FulcrumError } from '../../core/errors';
-import { checkAngle, checkNonNegativeForce, checkNonNegativeRate, checkRate } from '../../core/limits';
+import {
+  checkAngle,
+  checkHertz,
+  checkNonNegativeForce,
+  checkNonNegativeRate,
+  checkRate,
+} from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -115,7 +121,7 @@ export class RevoluteJoint extends Joint {
   }
 
   setSpring(hertz: number, dampingRatio: number): void {
-    checkNonNegativeRate('hertz', hertz);
+    checkHertz('hertz', hertz);
     checkNonNegativeRate('dampingRatio', dampingRatio);
     this.changing();
     this.o.hertz = hertz;

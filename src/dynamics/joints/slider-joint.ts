@@ -1,5 +1,5 @@
 import { checkBoolean, FulcrumError } from '../../core/errors';
-import { checkCoordinate, checkNonNegativeRate } from '../../core/limits';
+import { checkCoordinate, checkHertz, checkNonNegativeRate } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -89,7 +89,7 @@ export abstract class SliderJoint extends Joint {
   }
 
   setSpring(hertz: number, dampingRatio: number): void {
-    checkNonNegativeRate('hertz', hertz);
+    checkHertz('hertz', hertz);
     checkNonNegativeRate('dampingRatio', dampingRatio);
     this.changing();
     this.s.hertz = hertz;

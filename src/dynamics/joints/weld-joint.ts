@@ -1,4 +1,4 @@
-import { checkNonNegativeRate } from '../../core/limits';
+import { checkHertz, checkNonNegativeRate } from '../../core/limits';
 import type { Vec2 } from '../../math/vec2';
 import type { Body } from '../body';
 import { S } from '../body-store';
@@ -50,8 +50,8 @@ export class WeldJoint extends Joint {
 
   /** 0 makes that part rigid. */
   setStiffness(linearHertz: number, angularHertz: number, dampingRatio: number): void {
-    checkNonNegativeRate('linearHertz', linearHertz);
-    checkNonNegativeRate('angularHertz', angularHertz);
+    checkHertz('linearHertz', linearHertz);
+    checkHertz('angularHertz', angularHertz);
     checkNonNegativeRate('dampingRatio', dampingRatio);
     this.changing();
     this.o.linearHertz = linearHertz;
