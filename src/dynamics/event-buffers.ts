@@ -3,6 +3,14 @@ import { growF64 } from '../core/grow';
 import { ContactFlag, type ContactStore } from './contact-store';
 import { ShapeFlag, type ShapeStore } from './shape-store';
 
+/** What a warning is about (see WarningEvent). An enum for the reason in dynamics/body-store.ts. */
+export enum WarningCode {
+  /** shapes at their contact limit wait for pairs with shapes they overlap */
+  CONTACT_LIMIT = 0,
+  /** the search for new pairs reached its budget: proxies wait for the next step */
+  PAIR_SEARCH = 1,
+}
+
 /**
  * Events of one step as plain numbers, recorded without allocation while the step runs and turned
  * into objects only after it, for the handlers and the readable arrays.
@@ -19,8 +27,12 @@ export class EventBuffers {
   readonly hitShapes = new IntList();
   /** point x, y, normal x, y, approach speed per hit */
   hitData = new Float64Array(5 * 16);
+  /** code, count, limit, example shape (or -1) per warning; at most one of each code a step */
+  readonly warningData = new Float64Array(8);
+  warningCount = 0;
 
   clear(): void {
+    this.warningCount = 0;
     this.contactBegin.clear();
     this.contactEnd.clear();
     this.sensorBegin.clear();
@@ -54,6 +66,15 @@ export class EventBuffers {
     const visitor = sensor === a ? b : a;
     if ((shapes.flags[sensor] & shapes.flags[visitor] & ShapeFlag.SENSOR_EVENTS) !== 0)
       list.push2(sensor, visitor);
+  }
+
+  recordWarning(code: WarningCode, count: number, limit: number, shape: number): void {
+    const d = this.warningData;
+    const k = 4 * this.warningCount++;
+    d[k] = code;
+    d[k + 1] = count;
+    d[k + 2] = limit;
+    d[k + 3] = shape;
   }
 
   recordHit(a: number, b: number, px: number, py: number, nx: number, ny: number, speed: number): void {

@@ -3,7 +3,7 @@ import { IntList } from '../collision/int-list';
 import { PairSet } from '../collision/pair-set';
 import { makeSettings, type Settings } from '../core/settings';
 import { packedBounds } from '../geometry/bounds';
-import { maxExtentFrom, minExtent } from '../geometry/extent';
+import { centroidExtent, maxExtentFrom, minExtent } from '../geometry/extent';
 import { computeMass } from '../geometry/mass';
 import { Pack } from '../geometry/packed';
 import type { MassData } from '../geometry/types';
@@ -11,6 +11,7 @@ import type { Bounds } from '../math/aabb';
 import { makeBounds } from '../math/aabb';
 import type { Transform } from '../math/vec2';
 import { BodyFlag, BodyKind, BodyStore } from './body-store';
+import { ContactLimiter } from './contact-limit';
 import { ContactConstraints } from './contact-solver';
 import { ContactFlag, ContactStore } from './contact-store';
 import { EventBuffers } from './event-buffers';
@@ -53,6 +54,7 @@ export class WorldCore implements PairFilter {
   readonly bodies = new BodyStore();
   readonly shapes = new ShapeStore();
   readonly contacts = new ContactStore();
+  readonly contactLimiter = new ContactLimiter(this);
   readonly broadPhase: BroadPhase;
   readonly pairs = new PairSet(256);
   readonly islands = new Islands();
@@ -158,6 +160,8 @@ export class WorldCore implements PairFilter {
           ? ProxyType.KINEMATIC
           : ProxyType.DYNAMIC;
     this.refreshShapeBounds(shape);
+    shapes.centroidExtent[shape] = centroidExtent(shapes.geometry[shape]!);
+    if (type === ProxyType.DYNAMIC) this.contactLimiter.noteDynamic(shapes.centroidExtent[shape]);
     shapes.proxyKey[shape] = this.broadPhase.createProxy(
       shapes.minX[shape],
       shapes.minY[shape],
@@ -275,6 +279,7 @@ export class WorldCore implements PairFilter {
     bodies.contactHead[bodyA] = contacts.linkEdge(c, 0, bodies.contactHead[bodyA]);
     bodies.contactHead[bodyB] = contacts.linkEdge(c, 1, bodies.contactHead[bodyB]);
     this.pairs.set(shapeA, shapeB, c);
+    this.contactLimiter.charge(contacts, c);
     return c;
   }
 
@@ -290,6 +295,7 @@ export class WorldCore implements PairFilter {
     bodies.contactHead[bodyA] = contacts.unlinkEdge(c, 0, bodies.contactHead[bodyA]);
     bodies.contactHead[bodyB] = contacts.unlinkEdge(c, 1, bodies.contactHead[bodyB]);
     this.pairs.delete(contacts.shapeA[c], contacts.shapeB[c]);
+    this.contactLimiter.discharge(contacts, c);
     contacts.free(c);
   }
 
