@@ -1,6 +1,7 @@
 import { type BroadPhase, type PairAdmission, ProxyType, SearchMode } from '../collision/broad-phase';
 import { IntList } from '../collision/int-list';
 import { growF64, growI32, growU8 } from '../core/grow';
+import { BodyFlag, BodyKind } from './body-store';
 import { ContactFlag, type ContactStore } from './contact-store';
 import type { WorldCore } from './world-core';
 
@@ -137,10 +138,11 @@ export class ContactLimiter implements PairAdmission {
   /**
    * Before a search: sizes the per-shape scratch, drops the shapes that wait no more from `waiting`,
    * and buffers those that have room or a contact to give up, so that the search looks for their
-   * pairs; the others are sealed for this search.
+   * pairs (but not those of sleeping bodies); the others are sealed for this search.
    */
   requeue(broad: BroadPhase): void {
     const shapes = this.core.shapes;
+    const bodies = this.core.bodies;
     if (this.pending.length < shapes.capacity) {
       this.pending = growI32(this.pending, shapes.capacity);
       this.state = growU8(this.state, shapes.capacity);
@@ -157,6 +159,12 @@ export class ContactLimiter implements PairAdmission {
         continue;
       }
       data[kept++] = s;
+      // a sleeping body waits where it is: a body that wakes it searches, and finds it
+      const body = shapes.body[s];
+      if (bodies.kind[body] !== BodyKind.STATIC && (bodies.flags[body] & BodyFlag.AWAKE) === 0) {
+        state[s] &= ~Wait.SEALED;
+        continue;
+      }
       if (this.isSealed(s)) state[s] |= Wait.SEALED;
       else {
         state[s] &= ~Wait.SEALED;
