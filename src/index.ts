@@ -8,6 +8,7 @@ export type {
   ContactHitEvent,
   SensorEvent,
   StepEvent,
+  WarningEvent,
   WorldEventMap,
   WorldEvents,
 } from './dynamics/events';

@@ -40,6 +40,51 @@ export interface PairFilter {
   shouldPair(shapeA: number, shapeB: number): boolean;
 }
 
+/** What PairAdmission.begin says of a search. An enum for the reason in dynamics/body-store.ts. */
+export enum SearchMode {
+  /** every pair found is looked up */
+  OPEN = 0,
+  /** the shape takes no more pairs that count against it: those go to `block`, not looked up */
+  SEALED = 1,
+  /** sealed, and every pair with a dynamic shape would count against it: the dynamic tree is not searched */
+  CLOSED = 2,
+}
+
+/** Chooses which of the new candidate pairs of one proxy's search become pairs (see ContactLimiter). */
+export interface PairAdmission {
+  /** Starts the search of `shape` (see SearchMode). */
+  begin(shape: number): SearchMode;
+  /** Whether a pair of `shape` with `other` would count against `shape`. */
+  counts(shape: number, other: number): boolean;
+  /** Notes a pair that `begin` ruled out, allowed by the filter. */
+  block(shape: number, other: number): void;
+  /** Whether some shape waits for room; false spares the search asking `refuses`. */
+  readonly anyWaiting: boolean;
+  /** Whether a pair of `shape` with `other` is refused before it is looked up (`other` has no room). */
+  refuses(shape: number, other: number): boolean;
+  /**
+   * Whether the search of `shape` may look in a smaller box than its fat box, which it then writes
+   * in `box` (minX, minY, maxX, maxY): only pairs that near could be admitted, and of the proxies
+   * whose fat box overlaps it, only those `isNear` allows are looked at.
+   */
+  searchBox(shape: number, box: Float64Array): boolean;
+  /** Whether `other` is near enough to `shape` (see searchBox). */
+  isNear(shape: number, other: number): boolean;
+  /** Keeps, of the pairs `out[from, out.length)` found for shape `shape`, those it admits (compacting `out`). */
+  admit(shape: number, out: IntList, from: number): void;
+}
+
+const ADMIT_ALL: PairAdmission = {
+  begin: () => SearchMode.OPEN,
+  counts: () => false,
+  block() {},
+  anyWaiting: false,
+  refuses: () => false,
+  searchBox: () => false,
+  isNear: () => true,
+  admit() {},
+};
+
 /** Axis-aligned boxes stored by column (the shape store's tight boxes). */
 export interface BoxColumns {
   readonly minX: Float64Array;
@@ -51,6 +96,8 @@ export interface BoxColumns {
 /** the box `query` hands to `queryBox`, and the fat box `moveProxy` hands to the tree */
 const queryScratch = new Float64Array(4);
 const moveScratch = new Float64Array(4);
+/** the box a search looks in when PairAdmission.searchBox narrows it */
+const nearScratch = new Float64Array(4);
 
 /** A displacement of zero, for `moveProxy` callers that expect none. Read only. */
 export const NO_MOTION = new Float64Array(2);
@@ -62,6 +109,18 @@ export const NO_MOTION = new Float64Array(2);
  */
 enum MotionAhead {
   FACTOR = 2,
+}
+
+/**
+ * How many box overlaps one `updatePairs` may examine: PER_PROXY for each proxy of the broad phase,
+ * and at least MIN. Searches stop there, and the proxies not searched yet wait for the next update:
+ * shapes that do not overlap find a few dozen boxes around each (the tumbler's drum, 404 in one
+ * search, and 2 cm grains poured in a box, 273, are the most seen), but each of n shapes created on one
+ * spot finds all n, and one update would examine n^2 overlaps. An enum for the reason above.
+ */
+enum SearchBudget {
+  PER_PROXY = 256,
+  MIN = 65536,
 }
 
 /**
@@ -78,11 +137,32 @@ export class BroadPhase {
   private readonly moveBuffer = new IntList(64);
   private readonly found = new IntList(64);
   private readonly rayVisitor = new KeyedRayCastVisitor();
+  /** proxies the last `updatePairs` left buffered for the next one, and the overlaps it examined (see SearchBudget) */
+  deferredCount = 0;
+  examinedCount = 0;
+  /** what PairAdmission said of the current search: searchBox, begin, anyWaiting */
+  private searchNear = false;
+  private searchFull = false;
+  private searchCrowded = false;
 
   constructor(private readonly aabbMargin: number) {}
 
   get proxyCount(): number {
     return this.trees[0].proxyCount + this.trees[1].proxyCount + this.trees[2].proxyCount;
+  }
+
+  /** How many box overlaps one `updatePairs` may examine (see SearchBudget). */
+  get searchBudget(): number {
+    return Math.max(SearchBudget.MIN, SearchBudget.PER_PROXY * this.proxyCount);
+  }
+
+  /** The shape of the first proxy the last `updatePairs` left buffered, or -1. */
+  firstDeferredShape(): number {
+    for (let i = 0; i < this.moveBuffer.length; i++) {
+      const key = this.moveBuffer.data[i];
+      if (key >= 0) return this.trees[key & 3].getUserData(key >> 2);
+    }
+    return -1;
   }
 
   /** Whether the trees whose bit (1 << type) is in typeMask hold no proxy. */
@@ -192,6 +272,11 @@ export class BroadPhase {
     return true;
   }
 
+  /** Whether the next `updatePairs` looks for new pairs of this proxy. */
+  isBuffered(key: number): boolean {
+    return this.moveIndex[key & 3][key >> 2] >= 0;
+  }
+
   /** Makes the next `updatePairs` look for new pairs of this proxy. Buffering twice is harmless. */
   bufferMove(key: number): void {
     const index = this.moveIndex[key & 3];
@@ -203,33 +288,93 @@ export class BroadPhase {
 
   /**
    * Appends to `out` every new candidate pair as two ints (smaller shape id, larger shape id), sorted,
-   * then empties the move buffer. A pair is a candidate when the fat boxes overlap, at least one proxy
-   * is buffered, the types may pair, `existing` does not hold the pair of shape ids and `filter`
-   * allows it. (Filtered here, before the sort: a chain's links find their jointed neighbours every
-   * time they look, about 40 refused pairs a step, up to 100, in a swinging 100-link chain.)
+   * and takes the searched proxies out of the move buffer. A pair is a candidate when the fat boxes
+   * overlap, at least one proxy is buffered, the types may pair, `existing` does not hold the pair of
+   * shape ids, `filter` allows it and `admission` keeps it. (Filtered here, before the sort: a chain's
+   * links find their jointed neighbours every time they look, about 40 refused pairs a step, up to
+   * 100, in a swinging 100-link chain.) Proxies are searched in the buffer's order until SearchBudget
+   * overlaps were examined; the rest stay buffered, in order, for the next update.
    */
-  updatePairs(existing: PairSet, filter: PairFilter, out: IntList): void {
+  updatePairs(
+    existing: PairSet,
+    filter: PairFilter,
+    out: IntList,
+    admission: PairAdmission = ADMIT_ALL,
+  ): void {
     for (let type = 0; type < 3; type++) this.trees[type].settleMoves();
     const start = out.length;
     const buffer = this.moveBuffer;
-    for (let i = 0; i < buffer.length; i++) {
-      const key = buffer.data[i];
+    const budget = this.searchBudget;
+    let examined = 0;
+    let searched = 0;
+    for (; searched < buffer.length && examined < budget; searched++) {
+      const key = buffer.data[searched];
       if (key < 0) continue;
       const type = key & 3;
       const id = key >> 2;
       const tree = this.trees[type];
       const shapeId = tree.getUserData(id);
+      const from = out.length;
+      const near = admission.searchBox(shapeId, nearScratch);
+      const boxes = near ? nearScratch : tree.boxes;
+      const at = near ? 0 : 4 * id;
+      this.searchNear = near;
+      const mode = admission.begin(shapeId);
+      this.searchFull = mode !== SearchMode.OPEN;
+      this.searchCrowded = admission.anyWaiting;
       if (type === ProxyType.DYNAMIC) {
-        this.findPairs(key, shapeId, tree.boxes, 4 * id, ProxyType.STATIC, existing, filter, out);
-        this.findPairs(key, shapeId, tree.boxes, 4 * id, ProxyType.KINEMATIC, existing, filter, out);
+        examined += this.findPairs(
+          key,
+          shapeId,
+          boxes,
+          at,
+          ProxyType.STATIC,
+          existing,
+          filter,
+          admission,
+          out,
+        );
+        examined += this.findPairs(
+          key,
+          shapeId,
+          boxes,
+          at,
+          ProxyType.KINEMATIC,
+          existing,
+          filter,
+          admission,
+          out,
+        );
       }
-      this.findPairs(key, shapeId, tree.boxes, 4 * id, ProxyType.DYNAMIC, existing, filter, out);
+      if (mode !== SearchMode.CLOSED) {
+        examined += this.findPairs(
+          key,
+          shapeId,
+          boxes,
+          at,
+          ProxyType.DYNAMIC,
+          existing,
+          filter,
+          admission,
+          out,
+        );
+      }
+      admission.admit(shapeId, out, from);
     }
-    for (let i = 0; i < buffer.length; i++) {
+    for (let i = 0; i < searched; i++) {
       const key = buffer.data[i];
       if (key >= 0) this.moveIndex[key & 3][key >> 2] = -1;
     }
-    buffer.clear();
+    let kept = 0;
+    for (let i = searched; i < buffer.length; i++) {
+      const key = buffer.data[i];
+      if (key < 0) continue;
+      buffer.data[kept] = key;
+      this.moveIndex[key & 3][key >> 2] = kept++;
+    }
+    buffer.length = kept;
+    this.deferredCount = kept;
+    this.examinedCount = examined;
     out.sortPairs(start);
   }
 
@@ -307,6 +452,7 @@ export class BroadPhase {
     this.trees[ProxyType.STATIC].rebuild();
   }
 
+  /** Appends the new candidate pairs of one proxy with the proxies of one tree; returns the overlaps examined. */
   private findPairs(
     key: number,
     shapeId: number,
@@ -315,8 +461,9 @@ export class BroadPhase {
     type: number,
     existing: PairSet,
     filter: PairFilter,
+    admission: PairAdmission,
     out: IntList,
-  ): void {
+  ): number {
     const found = this.found;
     const tree = this.trees[type];
     const moved = this.moveIndex[type];
@@ -326,14 +473,21 @@ export class BroadPhase {
       const id = found.data[i];
       const otherKey = (id << 2) | type;
       if (otherKey === key) continue;
+      const otherShape = tree.getUserData(id);
+      if (this.searchNear && !admission.isNear(shapeId, otherShape)) continue;
+      if (this.searchFull && admission.counts(shapeId, otherShape)) {
+        if (filter.shouldPair(shapeId, otherShape)) admission.block(shapeId, otherShape);
+        continue;
+      }
+      if (this.searchCrowded && admission.refuses(shapeId, otherShape)) continue;
       // When both proxies are buffered, each finds the other (the pair rules are symmetric): only the
       // one with the larger key reports the pair.
       if (otherKey > key && moved[id] >= 0) continue;
-      const otherShape = tree.getUserData(id);
       if (existing.get(shapeId, otherShape) !== -1) continue;
       if (!filter.shouldPair(shapeId, otherShape)) continue;
       if (shapeId < otherShape) out.push2(shapeId, otherShape);
       else out.push2(otherShape, shapeId);
     }
+    return found.length;
   }
 }

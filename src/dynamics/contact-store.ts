@@ -8,6 +8,9 @@ export enum ContactFlag {
   STARTED = 4,
   /** the contact's manifold record holds the last computed manifold and the pose it was computed at */
   CACHED = 8,
+  /** the contact counts against shape A's, or shape B's, contact limit (see contact-limit.ts) */
+  COUNTS_A = 16,
+  COUNTS_B = 32,
 }
 
 /**

@@ -8,6 +8,14 @@ export const BEGIN_STRIDE = 7;
 /** Numbers per hit in `hitData`: point x, y, normal x, y, approach speed. */
 export const HIT_STRIDE = 5;
 
+/** What a warning is about (see WarningEvent). An enum for the reason in dynamics/body-store.ts. */
+export enum WarningCode {
+  /** shapes at their contact limit wait for pairs with shapes they overlap */
+  CONTACT_LIMIT = 0,
+  /** the search for new pairs reached its budget: proxies wait for the next step */
+  PAIR_SEARCH = 1,
+}
+
 /**
  * Events of one step as plain numbers, recorded without allocation while the step runs and turned
  * into objects only after it, for the handlers and the readable arrays.
@@ -45,8 +53,12 @@ export class EventBuffers {
   readonly pendingContactEnd = new IntList();
   /** as pendingContactEnd: sensor shape, its generation, visitor shape, its generation */
   readonly pendingSensorEnd = new IntList();
+  /** code, count, limit, example shape (or -1) per warning; at most one of each code a step */
+  readonly warningData = new Float64Array(8);
+  warningCount = 0;
 
   clear(): void {
+    this.warningCount = 0;
     this.contactBegin.clear();
     this.contactEnd.clear();
     this.sensorBegin.clear();
@@ -94,6 +106,15 @@ export class EventBuffers {
   takePending(shapes: ShapeStore): void {
     takeStamped(this.pendingContactEnd, this.contactEnd, shapes);
     takeStamped(this.pendingSensorEnd, this.sensorEnd, shapes);
+  }
+
+  recordWarning(code: WarningCode, count: number, limit: number, shape: number): void {
+    const d = this.warningData;
+    const k = 4 * this.warningCount++;
+    d[k] = code;
+    d[k + 1] = count;
+    d[k + 2] = limit;
+    d[k + 3] = shape;
   }
 
   recordHit(a: number, b: number, px: number, py: number, nx: number, ny: number, speed: number): void {

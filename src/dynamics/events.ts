@@ -2,7 +2,7 @@ import type { IntList } from '../collision/int-list';
 import { fail } from '../core/errors';
 import type { Vec2 } from '../math/vec2';
 import type { Body } from './body';
-import { BEGIN_STRIDE, HIT_STRIDE } from './event-buffers';
+import { BEGIN_STRIDE, HIT_STRIDE, WarningCode } from './event-buffers';
 import type { ShapeHandle } from './shape';
 import type { World } from './world';
 
@@ -40,6 +40,25 @@ export interface SensorEvent {
   visitorShape: ShapeHandle;
 }
 
+/**
+ * Something the engine did to stay within its limits, that the simulation shows:
+ * - `'contactLimit'`: `count` shapes reached `limit` contacts (`world.maxContactsPerShape`) while they
+ *   overlap shapes they have no contact with, which pass through them for now (bodies created on top
+ *   of each other). Their contacts push them apart; the pairs left out are made as the contacts they
+ *   have end. `world.crowdedShapeCount` tells how many are still waiting.
+ * - `'pairSearchLimit'`: the search for new pairs examined its `limit` of box overlaps in one step;
+ *   `count` shapes look for theirs at the next step (they may overlap others for a step).
+ * Recorded at the first step where it happens, and again only after a step without it. `shape` is one
+ * of the shapes concerned (null if none is left), `message` says all of this in words.
+ */
+export interface WarningEvent {
+  type: 'contactLimit' | 'pairSearchLimit';
+  count: number;
+  limit: number;
+  shape: ShapeHandle | null;
+  message: string;
+}
+
 export interface StepEvent {
   dt: number;
 }
@@ -58,6 +77,7 @@ export interface WorldEventMap {
   postStep: StepEvent;
   sleep: BodyEvent;
   wake: BodyEvent;
+  warning: WarningEvent;
 }
 
 /** The events of the last step as arrays. */
@@ -69,6 +89,7 @@ export interface WorldEvents {
   sensorEnd: SensorEvent[];
   sleep: BodyEvent[];
   wake: BodyEvent[];
+  warning: WarningEvent[];
 }
 
 type Handler = (e: never) => void;
@@ -83,6 +104,7 @@ const EVENT_NAMES = [
   'postStep',
   'sleep',
   'wake',
+  'warning',
 ] as const;
 
 /**
@@ -145,10 +167,15 @@ export class EventDispatcher {
     this.wakeEvents = this.bodyEvents(islands.woken);
     islands.slept.clear();
     islands.woken.clear();
+    const warned = this.world.core.events.warningCount > 0;
     let any = false;
     for (const list of this.handlers.values()) if (list.length > 0) any = true;
-    if (!any) return;
+    if (!any && !warned) return;
     const events = this.current();
+    // a warning nobody listens to goes to the console, so that a crowd does not go unnoticed
+    if (warned && (this.handlers.get('warning')?.length ?? 0) === 0) {
+      for (const w of events.warning) console.warn(`Fulcrum: ${w.message}`);
+    }
     // ends first: a pair dropped between steps (a filter changed, a joint created) and found again in
     // this step has both its end and its new begin in this record, in that order
     this.run('contactEnd', events.contactEnd);
@@ -158,6 +185,7 @@ export class EventDispatcher {
     this.run('sensorBegin', events.sensorBegin);
     this.run('sleep', events.sleep);
     this.run('wake', events.wake);
+    this.run('warning', events.warning);
   }
 
   /** Makes the record into objects now, while every shape it names still has its handle. */
@@ -246,8 +274,46 @@ export class EventDispatcher {
       sensorEnd,
       sleep: this.sleepEvents,
       wake: this.wakeEvents,
+      warning: this.warnings(),
     };
     return this.cache;
+  }
+
+  private warnings(): WarningEvent[] {
+    const core = this.world.core;
+    const buf = core.events;
+    const out: WarningEvent[] = [];
+    for (let i = 0; i < buf.warningCount; i++) {
+      const d = buf.warningData;
+      const count = d[4 * i + 1];
+      const limit = d[4 * i + 2];
+      const s = d[4 * i + 3];
+      const shape = s >= 0 && core.shapes.alive[s] !== 0 ? (this.world.shapeHandles[s] ?? null) : null;
+      const where = shape ? `, e.g. on the body at ${showPoint(shape.body.position)}` : '';
+      if (d[4 * i] === WarningCode.CONTACT_LIMIT) {
+        out.push({
+          type: 'contactLimit',
+          count,
+          limit,
+          shape,
+          message:
+            `${count} shapes reached the limit of ${limit} contacts per shape (world.maxContactsPerShape) ` +
+            `while they overlap shapes they have no contact with${where}: bodies created on top of each ` +
+            'other? They pass through each other until the contacts they have push them apart.',
+        });
+      } else {
+        out.push({
+          type: 'pairSearchLimit',
+          count,
+          limit,
+          shape,
+          message:
+            `the search for new contacts examined its limit of ${limit} overlapping boxes in one step; ` +
+            `${count} shapes look for theirs at the next step${where}: many shapes overlap each other.`,
+        });
+      }
+    }
+    return out;
   }
 
   /** Body events from (slot, generation) pairs; a body destroyed since it slept or woke is left out. */
@@ -262,4 +328,8 @@ export class EventDispatcher {
     }
     return out;
   }
+}
+
+function showPoint(p: Vec2): string {
+  return `(${p.x.toFixed(2)}, ${p.y.toFixed(2)})`;
 }

@@ -12,7 +12,9 @@ import {
 import { Pack } from '../geometry/packed';
 import type { Manifold, ManifoldPoint } from '../geometry/types';
 import { BodyFlag } from './body-store';
+import { WarningRearm } from './contact-limit';
 import { ContactFlag, MC } from './contact-store';
+import { WarningCode } from './event-buffers';
 import type { WorldCore } from './world-core';
 
 /** A manifold point of its own class, so that its fields stay unboxed doubles (see ScratchPoint). */
@@ -26,19 +28,55 @@ class Point implements ManifoldPoint {
 const manifold: Manifold = { normalX: 0, normalY: 0, pointCount: 0, points: [new Point(), new Point()] };
 
 /**
- * Creates contacts for the new overlapping pairs the broad phase found and WorldCore.shouldPair
- * allowed, in (shapeA, shapeB) order.
+ * Creates contacts for the new overlapping pairs the broad phase found, WorldCore.shouldPair allowed
+ * and the contact limit admitted, in (shapeA, shapeB) order, and records the warnings of a crowd.
  * A world holds at most IndexBound.MAX contacts: pairs beyond that are left out, like filtered ones,
  * until their proxies move again.
  */
 export function createNewContacts(core: WorldCore): void {
   const pairs = core.newPairs;
+  const limiter = core.contactLimiter;
   pairs.clear();
-  core.broadPhase.updatePairs(core.pairs, core, pairs);
+  limiter.requeue(core.broadPhase);
+  core.broadPhase.updatePairs(core.pairs, core, pairs, limiter);
   const data = pairs.data;
   for (let i = 0, n = pairs.length; i < n; i += 2) {
     if (core.contacts.liveCount >= IndexBound.MAX) break;
     core.createContact(data[i], data[i + 1]);
+  }
+  limiter.settle(pairs);
+  warnOfCrowds(core);
+}
+
+/**
+ * Records a warning when shapes start to pass through shapes they overlap for want of room under the
+ * contact limit, or proxies to wait for the pair search; again only after WarningRearm.STEPS steps
+ * without it (a crowd coming apart passes the pair search's budget on and off).
+ * (The crowded count walks the waiting shapes: none in a scene under the limit.)
+ */
+function warnOfCrowds(core: WorldCore): void {
+  const limiter = core.contactLimiter;
+  const crowded = limiter.waiting.length === 0 ? 0 : limiter.crowdedCount;
+  if (crowded === 0) limiter.quietLimit = Math.min(limiter.quietLimit + 1, WarningRearm.STEPS);
+  else {
+    if (limiter.quietLimit >= WarningRearm.STEPS) {
+      core.events.recordWarning(WarningCode.CONTACT_LIMIT, crowded, limiter.limit, limiter.firstCrowded());
+    }
+    limiter.quietLimit = 0;
+  }
+  const broad = core.broadPhase;
+  const deferred = broad.deferredCount;
+  if (deferred === 0) limiter.quietSearch = Math.min(limiter.quietSearch + 1, WarningRearm.STEPS);
+  else {
+    if (limiter.quietSearch >= WarningRearm.STEPS) {
+      core.events.recordWarning(
+        WarningCode.PAIR_SEARCH,
+        deferred,
+        broad.searchBudget,
+        broad.firstDeferredShape(),
+      );
+    }
+    limiter.quietSearch = 0;
   }
 }
 

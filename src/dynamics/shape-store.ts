@@ -24,6 +24,10 @@ export class ShapeStore extends SlotStore {
   radius = new Float64Array(0);
   /** largest distance of any point of the shape from its body's origin */
   originExtent = new Float64Array(0);
+  /** largest distance of any point of the shape from its own centroid: its size for the contact limit */
+  centroidExtent = new Float64Array(0);
+  /** the contacts that count against this shape's contact limit (see dynamics/contact-limit.ts) */
+  contactLoad = new Int32Array(0);
   categoryBits = new Uint32Array(0);
   maskBits = new Uint32Array(0);
   groupIndex = new Int32Array(0);
@@ -47,6 +51,8 @@ export class ShapeStore extends SlotStore {
     this.restitution = growF64(this.restitution, capacity);
     this.radius = growF64(this.radius, capacity);
     this.originExtent = growF64(this.originExtent, capacity);
+    this.centroidExtent = growF64(this.centroidExtent, capacity);
+    this.contactLoad = growI32(this.contactLoad, capacity);
     this.categoryBits = growU32(this.categoryBits, capacity);
     this.maskBits = growU32(this.maskBits, capacity);
     this.groupIndex = growI32(this.groupIndex, capacity);
@@ -63,6 +69,7 @@ export class ShapeStore extends SlotStore {
     this.next[slot] = -1;
     this.flags[slot] = 0;
     this.proxyKey[slot] = -1;
+    this.contactLoad[slot] = 0;
     this.geometry[slot] = undefined;
   }
 }

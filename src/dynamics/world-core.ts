@@ -9,7 +9,7 @@ import {
   type Settings,
 } from '../core/settings';
 import { packedBounds } from '../geometry/bounds';
-import { maxExtentFrom, minExtent } from '../geometry/extent';
+import { centroidExtent, maxExtentFrom, minExtent } from '../geometry/extent';
 import { computeMass } from '../geometry/mass';
 import { Pack } from '../geometry/packed';
 import type { MassData } from '../geometry/types';
@@ -17,6 +17,7 @@ import type { Bounds } from '../math/aabb';
 import { makeBounds } from '../math/aabb';
 import type { Transform } from '../math/vec2';
 import { BodyFlag, BodyKind, BodyStore } from './body-store';
+import { ContactLimiter } from './contact-limit';
 import { ContactConstraints } from './contact-solver';
 import { ContactFlag, ContactStore } from './contact-store';
 import { EventBuffers } from './event-buffers';
@@ -60,6 +61,7 @@ export class WorldCore implements PairFilter {
   readonly bodies = new BodyStore();
   readonly shapes = new ShapeStore();
   readonly contacts = new ContactStore();
+  readonly contactLimiter = new ContactLimiter(this);
   readonly broadPhase: BroadPhase;
   readonly pairs = new PairSet(256);
   readonly islands = new Islands();
@@ -172,6 +174,8 @@ export class WorldCore implements PairFilter {
           ? ProxyType.KINEMATIC
           : ProxyType.DYNAMIC;
     this.refreshShapeBounds(shape);
+    shapes.centroidExtent[shape] = centroidExtent(shapes.geometry[shape]!);
+    if (type === ProxyType.DYNAMIC) this.contactLimiter.noteDynamic(shapes.centroidExtent[shape]);
     shapes.proxyKey[shape] = this.broadPhase.createProxy(
       shapes.minX[shape],
       shapes.minY[shape],
@@ -289,6 +293,7 @@ export class WorldCore implements PairFilter {
     bodies.contactHead[bodyA] = contacts.linkEdge(c, 0, bodies.contactHead[bodyA]);
     bodies.contactHead[bodyB] = contacts.linkEdge(c, 1, bodies.contactHead[bodyB]);
     this.pairs.set(shapeA, shapeB, c);
+    this.contactLimiter.charge(contacts, c);
     return c;
   }
 
@@ -304,6 +309,7 @@ export class WorldCore implements PairFilter {
     bodies.contactHead[bodyA] = contacts.unlinkEdge(c, 0, bodies.contactHead[bodyA]);
     bodies.contactHead[bodyB] = contacts.unlinkEdge(c, 1, bodies.contactHead[bodyB]);
     this.pairs.delete(contacts.shapeA[c], contacts.shapeB[c]);
+    this.contactLimiter.discharge(contacts, c);
     contacts.free(c);
   }
 

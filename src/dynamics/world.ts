@@ -152,6 +152,25 @@ export class World {
     this.core.hitEventThreshold = checkNonNegative('hitEventThreshold', value);
   }
 
+  /**
+   * Contacts that may count against one shape (default 32; see README, "Crowds"): a contact counts
+   * against the smaller of its two shapes, both when they are the same size, and a dynamic shape's
+   * contacts with static and kinematic shapes only against those. Shapes at the limit make no more
+   * contacts (a 'warning' event tells) until some of theirs end.
+   */
+  get maxContactsPerShape(): number {
+    return this.core.contactLimiter.limit;
+  }
+
+  set maxContactsPerShape(value: number) {
+    this.core.contactLimiter.limit = checkInteger('maxContactsPerShape', value, 1, IndexBound.MAX);
+  }
+
+  /** Shapes that the contact limit left without contacts with some shapes they overlap, after the last step. */
+  get crowdedShapeCount(): number {
+    return this.core.contactLimiter.crowdedCount;
+  }
+
   get bodyCount(): number {
     return this.core.bodies.liveCount;
   }

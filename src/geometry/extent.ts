@@ -57,3 +57,20 @@ export function minExtent(g: Geometry): number {
     }
   }
 }
+
+/**
+ * Largest distance from the shape's own centroid to any point of it (a circle's radius, a capsule's
+ * half length plus radius): its size, which the contact limit compares (see dynamics/contact-limit.ts).
+ */
+export function centroidExtent(g: Geometry): number {
+  switch (g.type) {
+    case 'circle':
+      return g.radius;
+    case 'capsule':
+      return maxExtentFrom(g, 0.5 * (g.center1.x + g.center2.x), 0.5 * (g.center1.y + g.center2.y));
+    case 'segment':
+      return maxExtentFrom(g, 0.5 * (g.point1.x + g.point2.x), 0.5 * (g.point1.y + g.point2.y));
+    case 'polygon':
+      return maxExtentFrom(g, g.centroid.x, g.centroid.y);
+  }
+}

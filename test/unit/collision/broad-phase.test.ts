@@ -269,6 +269,35 @@ describe('BroadPhase', () => {
     expect(runScene(5, 15, false)).toEqual(runScene(5, 15, false));
   });
 
+  it('stops searching at its budget of overlaps and searches the rest, in order, at the next updates', () => {
+    // 300 dynamic boxes on one spot: each search finds all 300 boxes, 90,000 in all, over the
+    // budget of max(65,536, 256 per proxy = 76,800)
+    const bp = new BroadPhase(0.1);
+    for (let i = 0; i < 300; i++) bp.createProxy(0, 0, 1, 1, 2, i, false);
+    expect(bp.searchBudget).toBe(256 * 300);
+    const existing = new PairSet();
+    const out = new IntList();
+    const found = new Set<number>();
+    const deferred: number[] = [];
+    for (let update = 0; update < 3; update++) {
+      out.clear();
+      bp.updatePairs(existing, allPairs, out);
+      expect(bp.examinedCount).toBeLessThan(bp.searchBudget + 300);
+      deferred.push(bp.deferredCount);
+      for (const [a, b] of pairsOf(out)) {
+        const pair = a * 300 + b;
+        expect(found.has(pair)).toBe(false);
+        found.add(pair);
+        existing.set(a, b, 0);
+      }
+    }
+    // the first update searched the first 256 proxies (each reporting its pairs with the ones before
+    // it), and the second the other 44: every pair once, none after
+    expect(deferred).toEqual([44, 0, 0]);
+    expect(found.size).toBe((300 * 299) / 2);
+    expect(bp.moveCount).toBe(0);
+  });
+
   it('queries selected trees and casts rays through all of them', () => {
     const bp = new BroadPhase(0.1);
     const keys: number[] = [];
