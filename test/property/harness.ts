@@ -793,6 +793,9 @@ export class Harness {
 
   private subscribe(entry: HandlerEntry): void {
     entry.unsubscribe = this.world.on(entry.event, () => {
+      // every handler but preStep's runs once the step has solved: its events name what took part,
+      // destroyed here or not
+      if (entry.event !== 'preStep') this.delivering();
       if (entry.budget <= 0) return;
       entry.budget--;
       const outer = this.handlerEvent;
@@ -856,9 +859,13 @@ export class Harness {
         fail(`contactBegin: normal ${show(e.normal)}`);
       if (e.points!.length > 2 || !e.points!.every(finiteVec)) fail(`contactBegin: points ${show(e.points)}`);
       if (this.touching.has(key)) fail(`contactBegin of shapes #${a} and #${b} twice without a contactEnd`);
-      this.touching.add(key);
+      if (this.shapeAlive[a] && this.shapeAlive[b]) this.touching.add(key);
     } else if (what === 'contactEnd') {
-      if (!this.touching.delete(key)) fail(`contactEnd of shapes #${a} and #${b} without a contactBegin`);
+      // the record of a step names shapes destroyed since (by an earlier handler): their pairs were
+      // forgotten then, and their ends are still delivered
+      const gone = !this.shapeAlive[a] || !this.shapeAlive[b];
+      if (!this.touching.delete(key) && !gone)
+        fail(`contactEnd of shapes #${a} and #${b} without a contactBegin`);
     } else {
       if (!finiteVec(e.point!) || !finiteVec(e.normal!))
         fail(`contactHit: ${show(e.point)} ${show(e.normal)}`);
@@ -880,8 +887,9 @@ export class Harness {
     const key = `${s}:${v}`;
     if (what === 'sensorBegin') {
       if (this.sensing.has(key)) fail(`sensorBegin of #${s} and #${v} twice without a sensorEnd`);
-      this.sensing.add(key);
-    } else if (!this.sensing.delete(key)) fail(`sensorEnd of #${s} and #${v} without a sensorBegin`);
+      if (this.shapeAlive[s] && this.shapeAlive[v]) this.sensing.add(key);
+    } else if (!this.sensing.delete(key) && this.shapeAlive[s] && this.shapeAlive[v])
+      fail(`sensorEnd of #${s} and #${v} without a sensorBegin`);
   }
 
   private onBodyEvent(what: 'sleep' | 'wake', body: Body): void {
