@@ -1,5 +1,6 @@
+import { writeFileSync } from 'node:fs';
 import fc from 'fast-check';
-import { firstSeed, fuzzing, runsPerSeed, seedCount } from './settings';
+import { firstSeed, fuzzing, lastCaseFile, runsPerSeed, seedCount } from './settings';
 
 /**
  * Checks `property` over the configured seeds (settings.ts). Each failure is shrunk by fast-check to
@@ -19,6 +20,8 @@ export async function checkProperty<T>(
     const started = performance.now();
     let cases = 0;
     const property = fc.asyncProperty(arbitrary, async (value) => {
+      // a case that never ends (a hang) is found in this file
+      if (lastCaseFile) writeFileSync(lastCaseFile, `${JSON.stringify([value], exactNumbers)}\n`);
       predicate(value);
       // let the test runner's worker talk to the main process now and then (its calls time out)
       if (++cases % 25 === 0) await new Promise((resolve) => setImmediate(resolve));

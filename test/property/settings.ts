@@ -5,6 +5,8 @@
  *   FULCRUM_FUZZ_SEED   first seed (default: 27 in the unit run, the clock in a fuzz run)
  *   FULCRUM_FUZZ_SEEDS  number of seeds, each its own fast-check run (default 1; fuzz 20)
  *   FULCRUM_FUZZ_RUNS   cases per seed (default: the suite's CI count; fuzz 200)
+ *   FULCRUM_FUZZ_LAST  a file that each case is written to (as JSON) before it runs: where a run
+ *                       hangs, it holds the case that hangs
  *   FULCRUM_FUZZ_TAME=1 keeps away from the failures known in issue 27 (extreme values, joint limits,
  *                       motors and springs, world.events read late, queries and snapshot bytes), so
  *                       that a run looks for other ones
@@ -28,3 +30,5 @@ export const seedCount = integer('FULCRUM_FUZZ_SEEDS', fuzzing ? 20 : 1);
 export function runsPerSeed(ciRuns: number): number {
   return integer('FULCRUM_FUZZ_RUNS', fuzzing ? 200 : ciRuns);
 }
+
+export const lastCaseFile = env.FULCRUM_FUZZ_LAST || undefined;
