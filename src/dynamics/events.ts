@@ -176,12 +176,12 @@ export class EventDispatcher {
     if (warned && (this.handlers.get('warning')?.length ?? 0) === 0) {
       for (const w of events.warning) console.warn(`Fulcrum: ${w.message}`);
     }
-    // ends first: a pair dropped between steps (a filter changed, a joint created) and found again in
-    // this step has both its end and its new begin in this record, in that order
+    // ends first: a pair dropped between steps (a filter or sensor flag changed, a joint created) and
+    // found again in this step has both its end and its new begin in this record, in that order
     this.run('contactEnd', events.contactEnd);
+    this.run('sensorEnd', events.sensorEnd);
     this.run('contactBegin', events.contactBegin);
     this.run('contactHit', events.contactHit);
-    this.run('sensorEnd', events.sensorEnd);
     this.run('sensorBegin', events.sensorBegin);
     this.run('sleep', events.sleep);
     this.run('wake', events.wake);

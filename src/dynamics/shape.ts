@@ -224,9 +224,10 @@ export class ShapeHandle {
     checkBoolean('isSensor', value);
     const shapes = this.body.world.core.shapes;
     if (value === ((shapes.flags[s] & ShapeFlag.SENSOR) !== 0)) return;
+    // the pairs end as what they were (a sensor's overlaps end as sensor events)
+    this.resetContacts(s);
     if (value) shapes.flags[s] |= ShapeFlag.SENSOR;
     else shapes.flags[s] &= ~ShapeFlag.SENSOR;
-    this.resetContacts(s);
   }
 
   get enableHitEvents(): boolean {

@@ -64,6 +64,16 @@ describe('a pair that began ends before it begins again', () => {
     expect(log).toEqual(['begin pair']);
   });
 
+  it('when a sensor becomes solid: its overlap ends as a sensor event, then it touches as a contact', () => {
+    const { world, box, log } = touchingPair(true);
+    box.isSensor = false;
+    world.step(1 / 60);
+    // (touchingPair logs sensor and contact events of the pair alike, as begin/end pair)
+    expect(log).toEqual(['begin pair', 'end pair', 'begin pair']);
+    expect(world.events.sensorEnd.map((e) => e.sensorShape)).toEqual([box]);
+    expect(world.events.contactBegin).toHaveLength(1);
+  });
+
   it('when isSensor is set to the value it had', () => {
     const { world, box, log } = touchingPair();
     box.isSensor = false;
