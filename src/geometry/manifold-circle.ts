@@ -5,6 +5,13 @@ import { Pack } from './packed';
 import type { Manifold } from './types';
 
 /**
+ * Centres closer than this share of the radii are taken as coincident: the direction between them
+ * is noise there, and below ~1e-154 the squares of their offsets underflow and the "unit" normal
+ * computed from them is not unit (1e-162 apart gave a normal of length 0.71).
+ */
+const COINCIDENT = 1e-12;
+
+/**
  * Writes a one-point manifold given in B's local frame: `ux, uy` is the unit normal from B to A
  * (so the A-to-B normal is its negation) and `(bx, by)`, `(ax, ay)` are the two surface points.
  */
@@ -64,8 +71,9 @@ export function collideCircles(
     return;
   }
   // concentric circles have no preferred direction: push along +y
-  const nx = distance > 0 ? dx / distance : 0;
-  const ny = distance > 0 ? dy / distance : 1;
+  const apart = distance > COINCIDENT * (rA + rB);
+  const nx = apart ? dx / distance : 0;
+  const ny = apart ? dy / distance : 1;
   out.normalX = nx;
   out.normalY = ny;
   const point = out.points[0];
@@ -123,11 +131,11 @@ export function collideCircleRoundedSegment(
   }
   let ux: number;
   let uy: number;
-  if (distance > 0) {
+  if (distance > COINCIDENT * (rA + rB)) {
     ux = dx / distance;
     uy = dy / distance;
   } else {
-    // centre exactly on the core segment: use the segment's right-hand normal
+    // centre on the core segment: use the segment's right-hand normal
     const len = Math.sqrt(ee);
     ux = ey / len;
     uy = -ex / len;
@@ -199,9 +207,8 @@ export function collideCirclePolygon(
       const dx = cx - vx;
       const dy = cy - vy;
       const vertexDistance = Math.sqrt(dx * dx + dy * dy);
-      // a centre within rounding of the vertex (the squares of its offsets underflow to 0) gives no
-      // direction: it keeps the face's normal
-      if (vertexDistance > 0) {
+      // a centre on the vertex gives no direction: it keeps the face's normal
+      if (vertexDistance > COINCIDENT * radius) {
         distance = vertexDistance;
         ux = dx / distance;
         uy = dy / distance;
