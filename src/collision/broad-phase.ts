@@ -3,14 +3,14 @@ import { DynamicTree, type TreeRayCastVisitor } from './dynamic-tree';
 import { IntList } from './int-list';
 import type { PairSet } from './pair-set';
 
-/** Body type of a proxy. */
+/** @internal Body type of a proxy. */
 export enum ProxyType {
   STATIC = 0,
   KINEMATIC = 1,
   DYNAMIC = 2,
 }
 
-/** Proxy key = (tree proxy id << 2) | type. */
+/** @internal Proxy key = (tree proxy id << 2) | type. */
 export function proxyKeyType(key: number): ProxyType {
   return (key & 3) as ProxyType;
 }
@@ -19,7 +19,7 @@ export function proxyKeyId(key: number): number {
   return key >> 2;
 }
 
-/** Receives each proxy a ray reaches; see `BroadPhase.rayCast`. */
+/** @internal Receives each proxy a ray reaches; see `BroadPhase.rayCast`. */
 export interface BroadPhaseRayCastVisitor {
   /** Returns -1 to ignore the proxy, 0 to stop, or a fraction in (0, maxFraction) to clip the ray. */
   rayCastProxy(proxyKey: number, shapeId: number, maxFraction: number): number;
@@ -35,12 +35,12 @@ class KeyedRayCastVisitor implements TreeRayCastVisitor {
   }
 }
 
-/** Decides whether two shapes whose fat boxes overlap may become a pair (see updatePairs). */
+/** @internal Decides whether two shapes whose fat boxes overlap may become a pair (see updatePairs). */
 export interface PairFilter {
   shouldPair(shapeA: number, shapeB: number): boolean;
 }
 
-/** What PairAdmission.begin says of a search. An enum for the reason in dynamics/body-store.ts. */
+/** @internal What PairAdmission.begin says of a search. An enum for the reason in dynamics/body-store.ts. */
 export enum SearchMode {
   /** every pair found is looked up */
   OPEN = 0,
@@ -50,7 +50,7 @@ export enum SearchMode {
   CLOSED = 2,
 }
 
-/** Chooses which of the new candidate pairs of one proxy's search become pairs (see ContactLimiter). */
+/** @internal Chooses which of the new candidate pairs of one proxy's search become pairs (see ContactLimiter). */
 export interface PairAdmission {
   /** Starts the search of `shape` (see SearchMode). */
   begin(shape: number): SearchMode;
@@ -85,7 +85,7 @@ const ADMIT_ALL: PairAdmission = {
   admit() {},
 };
 
-/** Axis-aligned boxes stored by column (the shape store's tight boxes). */
+/** @internal Axis-aligned boxes stored by column (the shape store's tight boxes). */
 export interface BoxColumns {
   readonly minX: Float64Array;
   readonly minY: Float64Array;
@@ -128,6 +128,7 @@ enum SearchBudget {
  * get no margin), and a move buffer of proxies whose pairs must be looked for at the next
  * `updatePairs`. Pair rules: dynamic proxies pair with every type; static and kinematic proxies pair
  * only with dynamic ones. Each tree proxy's user data is the shape id.
+ * @internal
  */
 export class BroadPhase {
   private readonly trees: DynamicTree[] = [new DynamicTree(), new DynamicTree(), new DynamicTree()];

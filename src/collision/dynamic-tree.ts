@@ -2,7 +2,7 @@ import { growU8 } from '../core/grow';
 import type { Bounds } from '../math/aabb';
 import type { IntList } from './int-list';
 
-/** Receives each proxy whose box a ray reaches; see `DynamicTree.rayCast`. */
+/** @internal Receives each proxy whose box a ray reaches; see `DynamicTree.rayCast`. */
 export interface TreeRayCastVisitor {
   /** Returns -1 to ignore the proxy, 0 to stop, or a fraction in (0, maxFraction) to clip the ray. */
   rayCastProxy(proxyId: number, userData: number, maxFraction: number): number;
@@ -49,6 +49,7 @@ let rayStack: Int32Array = new Int32Array(64);
  * rebuilt when many moved), after Box2D v3's enlarged-box scheme.
  *
  * Not re-entrant: a ray-cast visitor must not modify the tree (queries are fine).
+ * @internal
  */
 export class DynamicTree {
   /** minX, minY, maxX, maxY per node. */

@@ -4,6 +4,7 @@ import { sortIntPairs, sortInts } from './int-sort';
  * A growable list of int32 values backed by an Int32Array: the engine's scratch list.
  * Reading `data` directly is allowed in hot loops (valid entries are `data[0, length)`); the array is
  * replaced when the list grows, so re-read it after any push.
+ * @internal
  */
 export class IntList {
   data: Int32Array;

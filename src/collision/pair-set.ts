@@ -10,6 +10,7 @@ enum Slot {
  * Open addressing with linear probing in typed arrays; deletion shifts later entries back instead of
  * leaving tombstones, so lookups never slow down with churn. The load factor stays at most 1/2.
  * Layout depends only on the sequence of operations, never on addresses or time.
+ * @internal
  */
 export class PairSet {
   private keysLo: Int32Array;

@@ -1,6 +1,7 @@
 /**
  * Tuning constants of the solver, in metres and seconds. Lengths and speeds are scaled by the
  * world's `lengthUnitsPerMeter`, so a world in pixels (say 50 units per metre) behaves the same.
+ * @internal
  */
 export interface Settings {
   /** overlap tolerated before position correction, keeps contacts persistent */
@@ -45,6 +46,7 @@ export const JOINT_SLOP_TURN = (2 / 180) * Math.PI;
 /** largest rotation of a body in one substep, radians; keeps the (cos, sin) integration accurate */
 export const MAX_ROTATION_PER_SUBSTEP = 0.25 * Math.PI;
 
+/** @internal */
 export function makeSettings(lengthUnitsPerMeter: number): Settings {
   const u = lengthUnitsPerMeter;
   const linearSlop = 0.005 * u;

@@ -4,6 +4,7 @@ import { growU8, growU32 } from './grow';
  * Base of the column stores (bodies, shapes, joints): slots reused through a free list, with a
  * generation per slot so that a handle can tell its object was destroyed. Subclasses own the
  * typed-array columns and grow and reset them.
+ * @internal
  */
 export abstract class SlotStore {
   capacity = 0;

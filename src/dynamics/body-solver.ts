@@ -40,6 +40,7 @@ export enum V {
  * velocity update that stay the same for the whole step: gravity, forces and damping are constant
  * over it. Read by integrateVelocities from one short record per body, in the order of `awake`,
  * instead of from eight columns at every substep.
+ * @internal
  */
 export function prepareVelocityUpdate(
   bodies: BodyStore,
@@ -77,6 +78,7 @@ export function prepareVelocityUpdate(
  * Velocity update of one substep for the awake bodies: gravity, forces and damping, as prepared by
  * prepareVelocityUpdate. Kinematic bodies keep their velocity. Damping is the implicit form
  * v / (1 + h c), stable for any c.
+ * @internal
  */
 export function integrateVelocities(
   bodies: BodyStore,
@@ -110,6 +112,7 @@ export function integrateVelocities(
  * hold (a network of joints locked against itself) can leave the solver with any velocity, and a body
  * moved by it would leave the finite numbers within a few steps. A kinematic body's as set by the
  * user: the turn below is exact only up to a quarter turn, and no body outruns the speed limit.
+ * @internal
  */
 export function integratePositions(
   bodies: BodyStore,

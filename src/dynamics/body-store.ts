@@ -39,6 +39,7 @@ export enum S {
 /**
  * Hot body data in typed-array columns indexed by body slot. Slots are reused through a free list;
  * a generation counter per slot lets handles detect that their body was destroyed.
+ * @internal
  */
 export class BodyStore extends SlotStore {
   kind = new Uint8Array(0);

@@ -53,6 +53,7 @@ enum Wait {
  * holds at most a speculative point) for a nearer pair. Shapes left with pairs out wait in `waiting`
  * and search again at every step in which they have room or a contact to give up, so that shapes
  * coming closer get their contact in time.
+ * @internal
  */
 export class ContactLimiter implements PairAdmission {
   /** contacts that may count against one shape (world.maxContactsPerShape) */

@@ -87,7 +87,7 @@ const MAX_LOADED_HERTZ_PER_SUBSTEP_RATE = 0.5;
 /** cosine of the steepest angle from the vertical at which a contact still supports a body */
 const SUPPORT_COSINE = 0.5;
 
-/** Contact constraints of one step, packed one block per touching contact (no objects). */
+/** @internal Contact constraints of one step, packed one block per touching contact (no objects). */
 export class ContactConstraints {
   count = 0;
   capacity = 0;
@@ -179,6 +179,7 @@ function setSoftness(out: Float64Array, at: number, soft: Softness, hertz: numbe
  * Sets the softness of the contacts (`contactSoft`, a spring of `contactHertz` at substep `h`) and of
  * the contacts held like the ground (`anchoredSoft`, twice as fast, see prepareContacts) for the steps
  * to come.
+ * @internal
  */
 export function setContactSoftness(
   cc: ContactConstraints,
@@ -202,6 +203,7 @@ const HEAVY_RATIO = 4;
  * is updated from the bodies' accumulated motion instead of recomputing the manifold. Contacts with a
  * body that contacts cannot move (no mass, no inertia), or between bodies of very different mass,
  * use the anchored softness, the others the contact softness (see setContactSoftness).
+ * @internal
  */
 export function prepareContacts(
   cc: ContactConstraints,
@@ -334,7 +336,7 @@ export function prepareContacts(
   }
 }
 
-/** Applies the impulses kept from the previous substep (or step) so the solver starts near the answer. */
+/** @internal Applies the impulses kept from the previous substep (or step) so the solver starts near the answer. */
 export function warmStartContacts(cc: ContactConstraints, state: Float64Array): void {
   const d = cc.data;
   const ids = cc.ids;
@@ -394,6 +396,7 @@ export function warmStartContacts(cc: ContactConstraints, state: Float64Array): 
  * which removes the energy the push added. The two points of a manifold are solved together as a
  * 2x2 block (a small LCP, by trying its four cases), so neither point is favoured by the order of
  * solving: a symmetric stack gets symmetric impulses and does not start to sway.
+ * @internal
  */
 export function solveContacts(
   cc: ContactConstraints,
@@ -633,6 +636,7 @@ export function solveContacts(
  * A contact supports when its normal is within 60 degrees of the vertical; its lower body is the one
  * on the side gravity points to. Contacts with walls thus support nothing, and in a world without
  * gravity no contact is stiffened.
+ * @internal
  */
 export function stiffenLoadedContacts(
   cc: ContactConstraints,
@@ -750,6 +754,7 @@ function copyConstraint(
  * order, so each part is still in an order of the colouring (its colours apart from each other) and
  * its supports still lowest first. Impulses are kept between steps per substep of the world's: the
  * moved ones are divided by `factor` here and multiplied back by restoreFineConstraints.
+ * @internal
  */
 export function moveFineConstraints(
   cc: ContactConstraints,
@@ -788,7 +793,7 @@ export function moveFineConstraints(
   into.supportCount = movedSupports;
 }
 
-/** Appends the constraints of `from` (see moveFineConstraints) to those of `cc`, impulses times `factor`. */
+/** @internal Appends the constraints of `from` (see moveFineConstraints) to those of `cc`, impulses times `factor`. */
 export function restoreFineConstraints(
   cc: ContactConstraints,
   from: ContactConstraints,
@@ -805,6 +810,7 @@ export function restoreFineConstraints(
  * until they touch, as in solveContacts. The lower body's own motion towards the upper one is not
  * passed on: held fixed, it could otherwise throw the upper body with a speed it never had, and
  * supports that rock would pump energy into the load; they only stop it. The impulses are not kept.
+ * @internal
  */
 export function solveSupports(cc: ContactConstraints, state: Float64Array, invH: number): void {
   const d = cc.data;
@@ -903,6 +909,7 @@ export function solveSupports(cc: ContactConstraints, state: Float64Array, invH:
 /**
  * Restitution after the substeps: points that approached faster than the threshold and carried an
  * impulse get a normal velocity of -restitution times their approach velocity.
+ * @internal
  */
 export function applyRestitution(cc: ContactConstraints, state: Float64Array, threshold: number): void {
   const d = cc.data;
@@ -958,7 +965,7 @@ export function applyRestitution(cc: ContactConstraints, state: Float64Array, th
   }
 }
 
-/** Copies the impulses back to the contacts for warm starting next step and for hit events. */
+/** @internal Copies the impulses back to the contacts for warm starting next step and for hit events. */
 export function storeImpulses(
   cc: ContactConstraints,
   normalImpulse: Float64Array,

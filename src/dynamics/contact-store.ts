@@ -44,6 +44,7 @@ export enum MC {
  * Contacts between pairs of shapes whose fat AABBs overlap, with their manifold and the impulses
  * kept for warm starting. Each contact sits in two intrusive doubly linked lists, one per body:
  * edge key = contact * 2 + side (side 0 is in body A's list, side 1 in body B's).
+ * @internal
  */
 export class ContactStore extends SlotStore {
   shapeA = new Int32Array(0);

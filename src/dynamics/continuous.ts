@@ -55,6 +55,7 @@ const sweptBox = new Float64Array(4);
  * (centre and rotation from `sweepStart` to its current ones) is swept against every static shape its
  * swept box touches, and the body is moved back to the earliest time of impact. Its velocity is kept;
  * next step's speculative contact stops it there.
+ * @internal
  */
 export function solveContinuous(core: WorldCore, b: number): void {
   sweepAgainst(core, b, sweepStart, 0, STATIC_TREE_MASK);
@@ -84,6 +85,7 @@ export function deferBullet(b: number): void {
  * against static shapes and the shapes of kinematic and dynamic non-bullet bodies, which are taken
  * at their final transform of the step (a conservative approximation: they do not sweep). Bullets do
  * not sweep against each other. Then moves the bullets' proxies.
+ * @internal
  */
 export function solveBullets(core: WorldCore): void {
   const bodies = core.bodies;

@@ -8,7 +8,7 @@ export const BEGIN_STRIDE = 7;
 /** Numbers per hit in `hitData`: point x, y, normal x, y, approach speed. */
 export const HIT_STRIDE = 5;
 
-/** What a warning is about (see WarningEvent). An enum for the reason in dynamics/body-store.ts. */
+/** @internal What a warning is about (see WarningEvent). An enum for the reason in dynamics/body-store.ts. */
 export enum WarningCode {
   /** shapes at their contact limit wait for pairs with shapes they overlap */
   CONTACT_LIMIT = 0,
@@ -24,6 +24,7 @@ export enum WarningCode {
  * begins' normals and points are copied out of the contacts, and each shape named gets its
  * generation, so that the record still says which shapes the events were about after those shapes
  * (and their contacts) are destroyed and their slots reused.
+ * @internal
  */
 export class EventBuffers {
   /** contact slot, shape A, shape B per begin */

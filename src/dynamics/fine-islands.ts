@@ -14,6 +14,7 @@ export const MAX_FINE_FACTOR = 4;
  * the softness levels' limit in contact-solver.ts). An island is a set of awake bodies joined by
  * touching contacts or joints; one with a joint stays at the world's substeps, the joint solvers
  * stepping every joint together.
+ * @internal
  */
 export class FineIslands {
   /** per body slot: 1 for a body stepped with finer substeps in this step */

@@ -17,6 +17,7 @@ const OVERFLOW = COLORS;
  * colouring's own step count, so it is deterministic and a restored snapshot continues it.
  *
  * The hinge batch orders its hinges with a colouring of its own, unshuffled (HingeBatch.orderByColor).
+ * @internal
  */
 export class GraphColoring {
   private bodyColors = new Uint32Array(0);

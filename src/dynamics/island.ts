@@ -7,6 +7,7 @@ import { BodyFlag, BodyKind, type BodyStore, S } from './body-store';
  * Sleep by islands. Each step the awake dynamic bodies are grouped (union-find) through touching
  * contacts and joints; an island whose every body has been slow for TIME_TO_SLEEP falls asleep as a
  * whole. A sleeping island is a linked list of bodies so that waking any one wakes them all.
+ * @internal
  */
 export class Islands {
   private parent = new Int32Array(0);

@@ -14,6 +14,7 @@ export const UNSUPPORTED = 0x3fffffff;
  *
  * Depths are shortest distances and carried masses maxima: both are the same for any order of the
  * contacts, so the step stays deterministic whatever order the colouring's shuffle gave them.
+ * @internal
  */
 export class LoadPaths {
   /** per body slot, for the moving bodies of the last analysed contacts */

@@ -32,6 +32,7 @@ const manifold: Manifold = { normalX: 0, normalY: 0, pointCount: 0, points: [new
  * and the contact limit admitted, in (shapeA, shapeB) order, and records the warnings of a crowd.
  * A world holds at most IndexBound.MAX contacts: pairs beyond that are left out, like filtered ones,
  * until their proxies move again.
+ * @internal
  */
 export function createNewContacts(core: WorldCore): void {
   const pairs = core.newPairs;
@@ -84,6 +85,7 @@ function warnOfCrowds(core: WorldCore): void {
  * Updates the manifold of every contact with an awake body, keeps the impulses of points whose
  * feature id survived (warm starting), records begin/end touching, wakes sleeping bodies that an
  * awake body starts to touch, and destroys contacts whose fat AABBs no longer overlap.
+ * @internal
  */
 export function updateContacts(core: WorldCore): void {
   const contacts = core.contacts;

@@ -10,7 +10,7 @@ export enum ShapeFlag {
   HIT_EVENTS = 8,
 }
 
-/** Shape data in columns indexed by shape slot; geometry objects are immutable and shared. */
+/** @internal Shape data in columns indexed by shape slot; geometry objects are immutable and shared. */
 export class ShapeStore extends SlotStore {
   body = new Int32Array(0);
   /** next shape of the same body (-1 ends the list) */
@@ -74,7 +74,7 @@ export class ShapeStore extends SlotStore {
   }
 }
 
-/** Collision filtering rule: a shared non-zero group decides; otherwise categories and masks must agree. */
+/** @internal Collision filtering rule: a shared non-zero group decides; otherwise categories and masks must agree. */
 export function shouldShapesCollide(store: ShapeStore, a: number, b: number): boolean {
   const ga = store.groupIndex[a];
   if (ga !== 0 && ga === store.groupIndex[b]) return ga > 0;

@@ -2,6 +2,7 @@
  * Soft constraint coefficients for a spring of `hertz` and `dampingRatio` stepped at `h` seconds
  * (Erin Catto, "Solver2D" / soft step): the bias rate turns position error into a velocity target,
  * the mass and impulse scales soften the constraint so it behaves like a damped spring.
+ * @internal
  */
 export interface Softness {
   biasRate: number;
@@ -9,6 +10,7 @@ export interface Softness {
   impulseScale: number;
 }
 
+/** @internal */
 export function makeSoftness(hertz: number, dampingRatio: number, h: number, out: Softness): Softness {
   if (hertz === 0) {
     out.biasRate = 0;
@@ -60,6 +62,7 @@ export function springInvMass(hertz: number, h: number, ownInvMass: number, rowI
  * (a2 = massScale / impulseScale) makes it -(speed + biasRate C + γ accumulated) / (invMass + γ);
  * with springInvMass = invMass this is the soft step's row,
  * -massScale (speed + biasRate C) / invMass - impulseScale accumulated.
+ * @internal
  */
 export function springImpulse(
   soft: Softness,

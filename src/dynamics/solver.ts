@@ -42,7 +42,7 @@ const contactSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 }
 const proxyMotion = new Float64Array(2);
 const staticSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
 
-/** Lists the awake non-static bodies by ascending slot. */
+/** @internal Lists the awake non-static bodies by ascending slot. */
 export function collectAwakeBodies(core: WorldCore): void {
   const bodies = core.bodies;
   if (core.awake.length < bodies.slotCount) core.awake = growI32(core.awake, bodies.capacity);
@@ -223,6 +223,7 @@ function solveFineIslands(core: WorldCore, dt: number, subSteps: number, factor:
 /**
  * The soft step: for each substep integrate velocities, warm start, solve with bias, integrate
  * positions, relax without bias; then restitution and impulses stored for the next step.
+ * @internal
  */
 export function solve(core: WorldCore, dt: number): void {
   const subSteps = core.subSteps;
@@ -348,6 +349,7 @@ function clampAwakeVelocities(
 /**
  * Writes the new transforms of the awake bodies, resets their step deltas, advances their sleep
  * timers, clears forces and moves their proxies.
+ * @internal
  */
 export function finalizeBodies(core: WorldCore, dt: number): void {
   const bodies = core.bodies;
@@ -468,7 +470,7 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
   if (continuous) solveBullets(core);
 }
 
-/** Groups awake dynamic bodies into islands through touching contacts and puts slow islands to sleep. */
+/** @internal Groups awake dynamic bodies into islands through touching contacts and puts slow islands to sleep. */
 export function updateSleep(core: WorldCore): void {
   const bodies = core.bodies;
   const islands = core.islands;

@@ -55,6 +55,7 @@ const boundsScratch: Bounds = makeBounds();
 /**
  * The engine's state and the internal operations that keep it consistent (contacts linked to bodies,
  * proxies in step with shapes, islands). The public `World` validates input and calls into this.
+ * @internal
  */
 export class WorldCore implements PairFilter {
   readonly settings: Settings;

@@ -7,6 +7,7 @@ import type { Geometry } from './types';
  * Tight world AABB of the packed shape at `base` (see packed.ts) placed at rotation (c, s) and
  * position (px, py): its vertices' box grown by its radius. Circles, capsules, segments and polygons
  * alike.
+ * @internal
  */
 export function packedBounds(data: Float64Array, base: number, xf: Transform, out: Bounds): void {
   const c = xf.q.c;
@@ -37,7 +38,7 @@ export function packedBounds(data: Float64Array, base: number, xf: Transform, ou
 
 const scratch = new Float64Array(Pack.STRIDE);
 
-/** Tight world AABB of `g` placed at `xf`, including its radius. */
+/** @internal Tight world AABB of `g` placed at `xf`, including its radius. */
 export function computeShapeBounds(g: Geometry, xf: Transform, out: Bounds): Bounds {
   packGeometry(g, scratch, 0);
   packedBounds(scratch, 0, xf, out);

@@ -6,7 +6,7 @@ export interface AABB {
   upperBound: Vec2;
 }
 
-/** Scratch form used inside the engine: four numbers, no nested objects. */
+/** @internal Scratch form used inside the engine: four numbers, no nested objects. */
 export interface Bounds {
   minX: number;
   minY: number;
@@ -14,10 +14,12 @@ export interface Bounds {
   maxY: number;
 }
 
+/** @internal */
 export function makeBounds(): Bounds {
   return { minX: 0, minY: 0, maxX: 0, maxY: 0 };
 }
 
+/** @internal */
 export function boundsOverlap(a: Bounds, b: Bounds): boolean {
   return !(b.minX > a.maxX || b.minY > a.maxY || a.minX > b.maxX || a.minY > b.maxY);
 }

@@ -66,7 +66,7 @@ export function resolveQueryFilter(
   return out;
 }
 
-/** Whether shape slot `s` passes the filter. */
+/** @internal Whether shape slot `s` passes the filter. */
 export function passesQueryFilter(shapes: ShapeStore, s: number, filter: ResolvedQueryFilter): boolean {
   if (!filter.includeSensors && (shapes.flags[s] & ShapeFlag.SENSOR) !== 0) return false;
   return (shapes.categoryBits[s] & filter.maskBits) !== 0 && (filter.categoryBits & shapes.maskBits[s]) !== 0;

@@ -1,6 +1,7 @@
 import type { Color, DebugDraw, ShapeStyle } from '../debug/debug-draw';
 import type { Body } from '../dynamics/body';
 import type { Transform, Vec2 } from '../math/vec2';
+import { requireBrowser } from './browser';
 import { cssColor } from './color';
 
 /** An image drawn at a body's position and angle instead of (or over) its shapes. */
@@ -58,7 +59,9 @@ export class CanvasDebugDraw implements DebugDraw {
   private readonly pointBatches = new Map<string, Path2D>();
   private readonly sprites: QueuedSprite[] = [];
 
-  constructor(readonly context: CanvasRenderingContext2D) {}
+  constructor(readonly context: CanvasRenderingContext2D) {
+    requireBrowser('new CanvasDebugDraw()', 'Path2D');
+  }
 
   private batch(style: ShapeStyle): ShapeBatch {
     const fill = style.fill === null ? null : cssColor(style.fill, style.fillAlpha);

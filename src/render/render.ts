@@ -1,3 +1,4 @@
+import { FulcrumError } from '../core/errors';
 import {
   type Color,
   type DebugDrawFlags,
@@ -8,6 +9,7 @@ import {
 import type { Body } from '../dynamics/body';
 import type { World } from '../dynamics/world';
 import type { Vec2 } from '../math/vec2';
+import { requireBrowser } from './browser';
 import { Camera, type CameraView } from './camera';
 import { CanvasDebugDraw, type Sprite } from './canvas-draw';
 import { Emitter } from './emitter';
@@ -77,10 +79,17 @@ export class Render {
   private readonly ownsCanvas: boolean;
 
   constructor(options: RenderOptions = {}) {
+    requireBrowser('new Render()', 'Path2D');
     if (options.canvas) {
+      if (typeof options.canvas.getContext !== 'function') {
+        throw new FulcrumError(
+          'options.canvas must be an HTML canvas element, got an object without getContext',
+        );
+      }
       this.canvas = options.canvas;
       this.ownsCanvas = false;
     } else {
+      requireBrowser('new Render()', 'document');
       this.canvas = document.createElement('canvas');
       this.canvas.style.width = '100%';
       this.canvas.style.height = '100%';
@@ -89,7 +98,7 @@ export class Render {
       this.ownsCanvas = true;
     }
     const context = this.canvas.getContext('2d');
-    if (!context) throw new Error('Render: the canvas has no 2D context');
+    if (!context) throw new FulcrumError('options.canvas has no 2D context (getContext("2d") gave null)');
     this.context = context;
     this.debugDraw = new CanvasDebugDraw(context);
     this.debugDraw.styleOf = (body) => this.styles.get(body);

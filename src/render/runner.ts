@@ -1,4 +1,5 @@
 import type { World } from '../dynamics/world';
+import { requireBrowser } from './browser';
 import { Emitter } from './emitter';
 import { Interpolator } from './interpolation';
 import type { Render } from './render';
@@ -94,7 +95,9 @@ export class Runner {
     return this.interpolator.alpha;
   }
 
+  /** Runs a frame on every animation frame (browser only: in Node, call step() or tick(now) instead). */
   start(): void {
+    requireBrowser('Runner.start()', 'requestAnimationFrame');
     if (this.handle !== null) return;
     this.lastTime = null;
     const loop = (time: number) => {

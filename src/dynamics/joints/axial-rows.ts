@@ -6,6 +6,7 @@ import type { JointContext } from './joint-context';
  * room, `mass` its effective mass, `maxPush` the fastest a violated limit is pushed back. Ahead of
  * the limit the row lets the bodies close the gap within the substep (speculative); past it, it
  * pushes back softly, at the joints' softness, and no faster than maxPush.
+ * @internal
  */
 export function limitImpulse(
   ctx: JointContext,

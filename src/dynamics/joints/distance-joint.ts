@@ -9,6 +9,7 @@ import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 import { CLOSURE_REGULARIZATION } from './joint-tree';
 
+/** @internal */
 export interface DistanceOptions {
   length: number;
   minLength: number;
@@ -35,6 +36,7 @@ export class DistanceJoint extends Joint {
   private ux = 0;
   private uy = 0;
 
+  /** @internal */
   constructor(
     world: World,
     bodyA: Body,

@@ -58,6 +58,7 @@ export enum Anchor {
  * the local anchors from `anchors` (Anchor layout), whose anchors relative to the centres it fills
  * in. Records are `stride` doubles apart (HingePaths' records begin with these fields). Until a
  * body's mass changes (which makes the joints' step anew), the next steps need only turnStepData.
+ * @internal
  */
 export function writeStepData(
   ctx: JointContext,
@@ -93,6 +94,7 @@ export function writeStepData(
  * The part of writeStepData that changes every step: the anchors turned with the bodies (from
  * `anchors`' centred ones), the centres' offset, and K's inverse for the first substep. The masses
  * must be in `d` already.
+ * @internal
  */
 export function turnStepData(
   ctx: JointContext,
@@ -148,6 +150,7 @@ export function turnStepData(
  * reaction force reads them here) and go back to the joints when the batch is made anew
  * (Joint.unpackHinge): handing them over every step took a call per hinge (3 % of a hinge grid's
  * step). The arithmetic is the revolute joint's point rows, term for term.
+ * @internal
  */
 export class HingeBatch {
   count = 0;

@@ -50,6 +50,7 @@ export enum P {
  * Non-dynamic bodies at a path's end have zero inverse mass and add nothing; their velocity still
  * enters J v, so a kinematic end drives the path.
  */
+/** @internal */
 export class HingePaths {
   /** the hinges, path after path, each path from one end to the other */
   readonly joints: Joint[] = [];

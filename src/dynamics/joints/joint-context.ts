@@ -1,7 +1,7 @@
 import type { Softness } from '../softness';
 import type { JointTree } from './joint-tree';
 
-/** What every joint needs from the step: the body columns and the substep's constants. */
+/** @internal What every joint needs from the step: the body columns and the substep's constants. */
 export interface JointContext {
   /** solver state, S.STRIDE doubles per body slot (velocities, step deltas) */
   state: Float64Array;

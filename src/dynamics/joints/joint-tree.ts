@@ -63,6 +63,7 @@ enum NodeKind {
   BODY = 0,
 }
 
+/** @internal */
 export class JointTree implements TreeSolve {
   /** the joints solved here this step by the body-and-joint tree, in creation order */
   readonly joints: Joint[] = [];

@@ -30,33 +30,51 @@ export abstract class Joint {
   destroyed = false;
   /** @internal anchors in the bodies' frames, relative to their origins */
   localAnchorAx: number;
+  /** @internal */
   localAnchorAy: number;
+  /** @internal */
   localAnchorBx: number;
+  /** @internal */
   localAnchorBy: number;
 
   // Solver data of the current step.
+  /** @internal */
   protected a = 0;
+  /** @internal */
   protected b = 0;
+  /** @internal */
   protected mA = 0;
+  /** @internal */
   protected iA = 0;
+  /** @internal */
   protected mB = 0;
+  /** @internal */
   protected iB = 0;
-  /** anchors relative to the centres of mass, world-oriented, at the start of the step */
+  /** @internal anchors relative to the centres of mass, world-oriented, at the start of the step */
   protected rAx0 = 0;
+  /** @internal */
   protected rAy0 = 0;
+  /** @internal */
   protected rBx0 = 0;
+  /** @internal */
   protected rBy0 = 0;
-  /** centre of B minus centre of A at the start of the step */
+  /** @internal centre of B minus centre of A at the start of the step */
   protected dcx = 0;
+  /** @internal */
   protected dcy = 0;
-  /** anchors rotated by the bodies' rotation so far in this step (see updateAnchors) */
+  /** @internal anchors rotated by the bodies' rotation so far in this step (see updateAnchors) */
   protected rAx = 0;
+  /** @internal */
   protected rAy = 0;
+  /** @internal */
   protected rBx = 0;
+  /** @internal */
   protected rBy = 0;
-  /** separation of the anchors (B minus A) after updateAnchors */
+  /** @internal separation of the anchors (B minus A) after updateAnchors */
   protected sepX = 0;
+  /** @internal */
   protected sepY = 0;
+  /** @internal */
   protected invH = 0;
   /** @internal set each step: the rigid rows of this joint are solved by the JointTree */
   inTree = false;
@@ -73,6 +91,7 @@ export abstract class Joint {
   /** @internal effective mass matrix (2 × 2) of the point rows through the tree, when `closure` */
   readonly closureMass = new Float64Array(4);
 
+  /** @internal */
   constructor(
     world: World,
     bodyA: Body,
@@ -175,7 +194,7 @@ export abstract class Joint {
     writeStepData(ctx, ids, anchors, d, i, i + 1);
   }
 
-  /** Rotates the anchors by the bodies' rotation so far in the step and measures their separation. */
+  /** @internal Rotates the anchors by the bodies' rotation so far in the step and measures their separation. */
   protected updateAnchors(state: Float64Array): void {
     const sa = this.a * S.STRIDE;
     const sb = this.b * S.STRIDE;
@@ -196,6 +215,7 @@ export abstract class Joint {
    * through the tree this step, or -1 when the row is solved with the two bodies' own masses.
    */
   axialEntry0 = -1;
+  /** @internal */
   axialEntry1 = -1;
 
   /**
@@ -279,6 +299,7 @@ export abstract class Joint {
    *
    * Held by the tree, a limited chain's limits are exact together: as iterative rows, even through
    * the tree, the 40 limits of a chain started a radian past them did not hold it at all.
+   * @internal
    */
   protected fillLimitRow(
     ctx: JointContext,
@@ -322,6 +343,7 @@ export abstract class Joint {
   /**
    * Writes the angular row (B keeps its angle to A) as row `row` of tree joint `j`: its error is
    * `angle0`, the angle error at the step's start, plus the bodies' turn since.
+   * @internal
    */
   protected fillAngleRow(
     state: Float64Array,
@@ -345,7 +367,7 @@ export abstract class Joint {
       angle0 + relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
   }
 
-  /** Writes the two point rows (anchor B minus anchor A) of tree joint `j`; anchors must be current. */
+  /** @internal Writes the two point rows (anchor B minus anchor A) of tree joint `j`; anchors must be current. */
   protected fillPointRows(jA: Float64Array, jB: Float64Array, err: Float64Array, j: number): void {
     const m = 9 * j;
     jA[m] = -1;
@@ -369,6 +391,7 @@ export abstract class Joint {
   /**
    * Zeros rows `first`..2 of tree joint `j`: the tree works in blocks of three rows, and a joint with
    * fewer leaves the rest empty.
+   * @internal
    */
   protected clearTreeRows(
     jA: Float64Array,

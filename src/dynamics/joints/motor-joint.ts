@@ -7,6 +7,7 @@ import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 import { relativeAngle, unwindAngle } from './joint-math';
 
+/** @internal */
 export interface MotorOptions {
   /** wanted position of B's centre in A's frame */
   linearOffsetX: number;
@@ -31,6 +32,7 @@ export class MotorJoint extends Joint {
   private offsetX = 0;
   private offsetY = 0;
 
+  /** @internal */
   constructor(
     world: World,
     bodyA: Body,

@@ -8,6 +8,7 @@ import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 import { solve22, solved } from './joint-math';
 
+/** @internal */
 export interface MouseOptions {
   targetX: number;
   targetY: number;
@@ -31,6 +32,7 @@ export class MouseJoint extends Joint {
   private cBx = 0;
   private cBy = 0;
 
+  /** @internal */
   constructor(world: World, body: Body, localAnchor: Vec2, userData: unknown, options: MouseOptions) {
     super(world, body, body, localAnchor, localAnchor, true, userData);
     this.o = options;

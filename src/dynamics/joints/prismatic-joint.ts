@@ -9,6 +9,7 @@ import type { JointContext } from './joint-context';
 import { relativeAngle, unwindAngle } from './joint-math';
 import { SliderJoint, type SliderOptions } from './slider-joint';
 
+/** @internal */
 export interface PrismaticOptions {
   referenceAngle: number;
   enableMotor: boolean;
@@ -24,6 +25,7 @@ export class PrismaticJoint extends SliderJoint {
   private angularImpulse = 0;
   private angle0 = 0;
 
+  /** @internal */
   constructor(
     world: World,
     bodyA: Body,

@@ -21,6 +21,7 @@ import { CLOSURE_REGULARIZATION } from './joint-tree';
 /** the Jacobian of B's turn relative to A (A's block, then B's) */
 const TURN_JACOBIAN = new Float64Array([0, 0, -1, 0, 0, 1]);
 
+/** @internal */
 export interface RevoluteOptions {
   referenceAngle: number;
   enableLimit: boolean;
@@ -53,6 +54,7 @@ export class RevoluteJoint extends Joint {
   private axialMass = 0;
   private readonly spring: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
 
+  /** @internal */
   constructor(
     world: World,
     bodyA: Body,

@@ -9,6 +9,7 @@ import { limitImpulse } from './axial-rows';
 import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 
+/** @internal */
 export interface SliderOptions {
   /** unit axis in body A's frame */
   localAxisX: number;
@@ -28,22 +29,34 @@ export interface SliderOptions {
 export abstract class SliderJoint extends Joint {
   /** @internal */
   s: SliderOptions;
+  /** @internal */
   protected perpImpulse = 0;
+  /** @internal */
   protected springImpulse = 0;
+  /** @internal */
   protected lowerImpulse = 0;
+  /** @internal */
   protected upperImpulse = 0;
+  /** @internal */
   protected axialImpulse = 0;
   private readonly spring: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
   private axis0x = 1;
   private axis0y = 0;
   // current axis and Jacobian terms (updated by updateAxis)
+  /** @internal */
   protected ux = 1;
+  /** @internal */
   protected uy = 0;
+  /** @internal */
   protected a1 = 0;
+  /** @internal */
   protected a2 = 0;
+  /** @internal */
   protected axialPosition = 0;
+  /** @internal */
   protected axialMass = 0;
 
+  /** @internal */
   constructor(
     world: World,
     bodyA: Body,
@@ -111,7 +124,7 @@ export abstract class SliderJoint extends Joint {
     }
   }
 
-  /** Current axis (turned with A), translation and the axial effective mass. */
+  /** @internal Current axis (turned with A), translation and the axial effective mass. */
   protected updateAxis(state: Float64Array): void {
     this.updateAnchors(state);
     const sa = this.a * S.STRIDE;
@@ -128,6 +141,7 @@ export abstract class SliderJoint extends Joint {
     this.axialMass = k > 0 ? 1 / k : 0;
   }
 
+  /** @internal */
   protected axialSpeed(state: Float64Array): number {
     const sa = this.a * S.STRIDE;
     const sb = this.b * S.STRIDE;
@@ -139,6 +153,7 @@ export abstract class SliderJoint extends Joint {
     );
   }
 
+  /** @internal */
   protected applyAxial(state: Float64Array, impulse: number): void {
     const sa = this.a * S.STRIDE;
     const sb = this.b * S.STRIDE;
@@ -150,10 +165,10 @@ export abstract class SliderJoint extends Joint {
     state[sb + S.W] += this.iB * impulse * this.a2;
   }
 
-  /** The tree's entry of the axis row (see Joint.axialEntry0), -1 when it is not weighed there. */
+  /** @internal The tree's entry of the axis row (see Joint.axialEntry0), -1 when it is not weighed there. */
   protected abstract axisEntry(): number;
 
-  /** Perpendicular impulse: P along perp = (-uy, ux), with its angular terms. */
+  /** @internal Perpendicular impulse: P along perp = (-uy, ux), with its angular terms. */
   protected applyPerp(state: Float64Array, impulse: number): void {
     const px = -this.uy;
     const py = this.ux;
@@ -187,12 +202,13 @@ export abstract class SliderJoint extends Joint {
     jB[2] = this.a2;
   }
 
-  /** Whether the subclass's motor is on. */
+  /** @internal Whether the subclass's motor is on. */
   protected abstract hasMotor(): boolean;
 
   /**
    * Writes the perpendicular row (no motion of B's anchor across the axis) as row `row` of tree joint
    * `j`, and zeros the rows after it; anchors and axis must be current (updateAxis).
+   * @internal
    */
   protected fillPerpRow(jA: Float64Array, jB: Float64Array, err: Float64Array, j: number, row: number): void {
     const px = -this.uy;
@@ -216,6 +232,7 @@ export abstract class SliderJoint extends Joint {
   /**
    * Writes the limit the bodies reach along the axis within the substep, if any, as row `row` of tree
    * joint `j` (see Joint.fillLimitRow); the axis must be current (updateAxis). Returns the row count.
+   * @internal
    */
   protected fillAxisLimitRow(
     ctx: JointContext,
@@ -254,13 +271,13 @@ export abstract class SliderJoint extends Joint {
     );
   }
 
-  /** Adds the tree's impulse on the limit row at `solution[o]` (see treeAddImpulse). */
+  /** @internal Adds the tree's impulse on the limit row at `solution[o]` (see treeAddImpulse). */
   protected addLimitImpulse(solution: Float64Array, o: number, keep: number): void {
     if (this.treeLimit === 1) this.lowerImpulse = keep * this.lowerImpulse - solution[o];
     else if (this.treeLimit === -1) this.upperImpulse = keep * this.upperImpulse - solution[o];
   }
 
-  /** Forgets the slider's own impulses (axial, perpendicular). */
+  /** @internal Forgets the slider's own impulses (axial, perpendicular). */
   protected forgetSliderImpulses(): void {
     this.perpImpulse = 0;
     this.springImpulse = 0;
@@ -269,14 +286,14 @@ export abstract class SliderJoint extends Joint {
     this.axialImpulse = 0;
   }
 
-  /** Warm starts the slider's own impulses (axial, perpendicular). */
+  /** @internal Warm starts the slider's own impulses (axial, perpendicular). */
   protected warmStartSlider(state: Float64Array): void {
     this.updateAxis(state);
     this.applyAxial(state, this.springImpulse + this.axialImpulse + this.lowerImpulse - this.upperImpulse);
     this.applyPerp(state, this.perpImpulse);
   }
 
-  /** The impulse of a motor along the axis after one solve (a prismatic's; none by default). */
+  /** @internal The impulse of a motor along the axis after one solve (a prismatic's; none by default). */
   protected axisMotor(_ctx: JointContext, _speed: number, _mass: number): number {
     return 0;
   }
@@ -284,6 +301,7 @@ export abstract class SliderJoint extends Joint {
   /**
    * The rows along the axis given its speed and mass (see Joint.solveAxial): motor, spring, then
    * limits; returns their impulse. Needs the axis current (updateAxis).
+   * @internal
    */
   protected solveAxisRows(ctx: JointContext, speed: number, mass: number, useBias: boolean): number {
     if (mass === 0) return 0;
@@ -339,6 +357,7 @@ export abstract class SliderJoint extends Joint {
   /**
    * The rows along the axis (unless the tree solves them: TreeAxials), then the perpendicular
    * constraint unless the tree owns it.
+   * @internal
    */
   protected solveSlider(ctx: JointContext, useBias: boolean): void {
     const state = ctx.state;
@@ -380,7 +399,7 @@ export abstract class SliderJoint extends Joint {
     }
   }
 
-  /** Force on B from the axial and perpendicular impulses. */
+  /** @internal Force on B from the axial and perpendicular impulses. */
   protected sliderForce(): Vec2 {
     const axial =
       (this.springImpulse + this.axialImpulse + this.lowerImpulse - this.upperImpulse) * this.invH;

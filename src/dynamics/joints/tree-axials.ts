@@ -17,7 +17,7 @@ const MAX_SWEEPS = 16;
 /** a sweep that changes no row's speed by more than this (m/s or rad/s) ends the sweeps */
 const SWEEP_TOLERANCE = 1e-6;
 
-/** Reads tree node `node`'s velocity rows after JointTree.substitute (see TreeAxials.factor). */
+/** @internal Reads tree node `node`'s velocity rows after JointTree.substitute (see TreeAxials.factor). */
 export interface TreeSolve {
   /** the solution vector: Block.ROWS doubles per node */
   readonly solution: Float64Array;
@@ -42,6 +42,7 @@ export interface TreeSolve {
  * (one tree solve per entry, at each factorization), and the rows are iterated by projected
  * Gauss-Seidel on C alone, which costs entries² per sweep instead of a tree solve per row; the sum
  * of their impulses then reaches the bodies with one projection.
+ * @internal
  */
 export class TreeAxials {
   /** per entry: its joint and which of the joint's axial rows (0 or 1) */

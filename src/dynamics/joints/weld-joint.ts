@@ -8,6 +8,7 @@ import { Joint } from './joint';
 import type { JointContext } from './joint-context';
 import { relativeAngle, solveSymmetric33, unwindAngle } from './joint-math';
 
+/** @internal */
 export interface WeldOptions {
   referenceAngle: number;
   /** 0 = rigid */
@@ -34,6 +35,7 @@ export class WeldJoint extends Joint {
   /** the block solve's impulse (see solve) */
   private readonly blockImpulse = new Float64Array(3);
 
+  /** @internal */
   constructor(
     world: World,
     bodyA: Body,

@@ -8,6 +8,7 @@ import { motorImpulse } from './axial-rows';
 import type { JointContext } from './joint-context';
 import { SliderJoint, type SliderOptions } from './slider-joint';
 
+/** @internal */
 export interface WheelOptions {
   enableMotor: boolean;
   motorSpeed: number;
@@ -24,6 +25,7 @@ export class WheelJoint extends SliderJoint {
   o: WheelOptions;
   private motorImpulse = 0;
 
+  /** @internal */
   constructor(
     world: World,
     bodyA: Body,

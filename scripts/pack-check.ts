@@ -1,0 +1,284 @@
+// npm run pack:check: the package as a user gets it. Packs the tarball (prepack builds dist/), installs
+// it into a scratch project in a temporary directory and runs a hello world there as ESM, as CommonJS,
+// as strict TypeScript (node16 and bundler resolution, against the installed declarations; the
+// README's examples too) and in Chromium from a plain HTML page with a <script> tag. Prints the
+// tarball's size and files and the core's min+gzip size, and fails over the size budget.
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import http from 'node:http';
+import type { AddressInfo } from 'node:net';
+import os from 'node:os';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { chromium } from 'playwright-core';
+
+/** min+gzip budget of what `import 'fulcrum'` loads (1 kB = 1,000 bytes) */
+const CORE_BUDGET = 60_000;
+
+const root = path.resolve(import.meta.dirname, '..');
+const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'fulcrum-pack-'));
+const app = path.join(scratch, 'app');
+const kB = (bytes: number) => `${(bytes / 1000).toFixed(1)} kB`;
+
+function run(command: string, args: string[], cwd: string): string {
+  return execFileSync(command, args, { cwd, encoding: 'utf8', stdio: ['ignore', 'pipe', 'inherit'] });
+}
+
+function step(name: string) {
+  console.log(`\n== ${name}`);
+}
+
+/**
+ * The hello world every runtime runs, given the package's exports: a ball of radius 0.5 m dropped from
+ * 2.3 m onto the ground's top at y = 0, stepped for 1 s at 1/60 s. It falls freely until its bottom
+ * meets the ground (at t = sqrt(2 * 1.8 / 10) = 0.6 s) and then rests there (restitution 0).
+ * The solver's semi-implicit Euler at 1/240 s lags free fall by g t h / 2 (1 cm at 0.5 s).
+ */
+const helloWorld = `function helloWorld({ World, Shape }) {
+  const world = new World({ gravity: { x: 0, y: -10 } });
+  const ground = world.createBody({ position: { x: 0, y: -1 } });
+  ground.createShape(Shape.box(20, 1));
+  const ball = world.createBody({ type: 'dynamic', position: { x: 0, y: 2.3 } });
+  ball.createShape(Shape.circle(0.5), { density: 1, restitution: 0 });
+  const heights = [];
+  for (let i = 1; i <= 60; i++) {
+    world.step(1 / 60);
+    if (i === 30) heights.push(ball.position.y);
+  }
+  heights.push(ball.position.y);
+  const freeFall = 2.3 - 0.5 * 10 * 0.5 * 0.5;
+  const problems = [];
+  if (!(Math.abs(heights[0] - freeFall) < 0.02)) problems.push('at 0.5 s the ball is at ' + heights[0] + ' m, free fall says ' + freeFall);
+  if (!(Math.abs(heights[1] - 0.5) < 0.01)) problems.push('at 1 s the ball is at ' + heights[1] + ' m, resting on the ground means 0.5');
+  if (!(Math.abs(ball.linearVelocity.y) < 0.05)) problems.push('at 1 s the ball moves at ' + ball.linearVelocity.y + ' m/s');
+  if (problems.length > 0) throw new Error('hello world: ' + problems.join('; '));
+  return 'fell ' + (2.3 - heights[0]).toFixed(4) + ' m in 0.5 s (free fall ' + (2.3 - freeFall) + '), rests at ' + heights[1].toFixed(4) + ' m';
+}`;
+
+/** Node has no DOM: fulcrum/render loads, and new Render() says it needs a browser. */
+const renderInNode = `function renderInNode(fulcrum, render) {
+  try {
+    new render.Render();
+  } catch (e) {
+    if (e instanceof fulcrum.FulcrumError && /needs a browser/.test(e.message)) return 'new Render() in Node: ' + e.message;
+    throw e;
+  }
+  throw new Error('new Render() in Node did not throw');
+}`;
+
+const typedHello = `import { type Body, FulcrumError, Shape, World, type WorldDef } from 'fulcrum';
+import { Camera, type CameraView, Render, type RenderOptions, Runner } from 'fulcrum/render';
+
+const def: WorldDef = { gravity: { x: 0, y: -10 } };
+const world = new World(def);
+const ball: Body = world.createBody({ type: 'dynamic', position: { x: 0, y: 2.3 } });
+ball.createShape(Shape.circle(0.5), { density: 1, restitution: 0 });
+world.on('contactBegin', (e) => console.log(e.normal.x, e.bodyA.position.y));
+const view: Partial<CameraView> = { center: { x: 0, y: 1 }, halfHeight: 3 };
+const options: RenderOptions = { world, view };
+const camera = new Camera(view);
+const runner = new Runner({ world, dt: 1 / 60 });
+runner.step();
+export function show(canvas: HTMLCanvasElement): Render | FulcrumError {
+  try {
+    return new Render({ ...options, canvas });
+  } catch (e) {
+    if (e instanceof FulcrumError) return e;
+    throw e;
+  }
+}
+export const scale: number = camera.scale;
+`;
+
+const typedCjsHello = `import fulcrum = require('fulcrum');
+import render = require('fulcrum/render');
+
+const world = new fulcrum.World({ gravity: { x: 0, y: -10 } });
+world.createBody({ type: 'dynamic' }).createShape(fulcrum.Shape.box(0.5, 0.5));
+world.step(1 / 60);
+export const camera: render.Camera = new render.Camera({ halfHeight: 2 });
+`;
+
+/** The README's TypeScript blocks that import the package, one file each. */
+function readmeExamples(): string[] {
+  const readme = fs.readFileSync(path.join(root, 'README.md'), 'utf8');
+  const blocks = [...readme.matchAll(/```ts\n([\s\S]*?)```/g)].map((m) => m[1]);
+  return blocks.filter((b) => /from 'fulcrum(\/render)?'/.test(b));
+}
+
+async function inChromium(dir: string): Promise<string> {
+  const page = `<!doctype html>
+<html><head><link rel="icon" href="data:,"></head><body>
+<canvas id="view" width="320" height="240"></canvas>
+<script src="node_modules/fulcrum/dist/fulcrum.global.js"></script>
+<script>
+${helloWorld}
+try {
+  const message = helloWorld(Fulcrum);
+  const world = new Fulcrum.World();
+  world.createBody().createShape(Fulcrum.Shape.box(5, 0.5));
+  const render = new Fulcrum.render.Render({ canvas: document.getElementById('view'), world, view: { center: { x: 0, y: 0 }, halfHeight: 3 } });
+  render.draw();
+  // the canvas's centre is the world's origin, inside the ground box: not the background (#15171d)
+  const pixel = Array.from(render.context.getImageData(160, 120, 1, 1).data);
+  if (pixel[0] === 0x15 && pixel[1] === 0x17 && pixel[2] === 0x1d) throw new Error('Fulcrum.render drew no ground at the canvas centre');
+  window.result = { ok: true, message: message + '; Fulcrum.render drew the ground (pixel ' + pixel.join(',') + ')' };
+} catch (e) {
+  window.result = { ok: false, message: String(e && e.stack || e) };
+}
+</script>
+</body></html>`;
+  fs.writeFileSync(path.join(dir, 'index.html'), page);
+  const server = http.createServer((req, res) => {
+    const file = path.join(dir, decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname));
+    if (!file.startsWith(dir) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
+      const index = path.join(dir, 'index.html');
+      if (req.url === '/') return res.end(fs.readFileSync(index));
+      res.statusCode = 404;
+      return res.end();
+    }
+    res.setHeader('content-type', file.endsWith('.js') ? 'text/javascript' : 'text/html');
+    res.end(fs.readFileSync(file));
+  });
+  await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
+  const { port } = server.address() as AddressInfo;
+  const browser = await chromium.launch({
+    executablePath: process.env.CHROMIUM_PATH ?? '/usr/bin/chromium',
+    args: ['--no-sandbox', '--disable-gpu'],
+  });
+  try {
+    const tab = await browser.newPage();
+    const errors: string[] = [];
+    tab.on('pageerror', (e) => errors.push(e.message));
+    tab.on('console', (m) => {
+      if (m.type() === 'error') errors.push(m.text());
+    });
+    await tab.goto(`http://127.0.0.1:${port}/`);
+    await tab.waitForFunction(() => (window as unknown as { result?: unknown }).result !== undefined);
+    const result = (await tab.evaluate(() => (window as unknown as { result: unknown }).result)) as {
+      ok: boolean;
+      message: string;
+    };
+    if (!result.ok) throw new Error(`in Chromium: ${result.message}`);
+    if (errors.length > 0) throw new Error(`in Chromium, page errors: ${errors.join('; ')}`);
+    return result.message;
+  } finally {
+    await browser.close();
+    server.close();
+  }
+}
+
+/** What `import 'fulcrum'` loads: dist/index.js and the chunks it imports. */
+function coreFiles(dist: string): string[] {
+  const files = ['index.js'];
+  for (let i = 0; i < files.length; i++) {
+    const code = fs.readFileSync(path.join(dist, files[i]), 'utf8');
+    for (const m of code.matchAll(/from\s*['"]\.\/([^'"]+\.js)['"]/g))
+      if (!files.includes(m[1])) files.push(m[1]);
+  }
+  return files;
+}
+
+async function main() {
+  step('npm pack (prepack builds dist/)');
+  const packed = run('npm', ['pack', '--json', '--pack-destination', scratch], root);
+  const info = JSON.parse(packed.slice(packed.indexOf('[\n'))) as {
+    filename: string;
+    size: number;
+    unpackedSize: number;
+    files: { path: string; size: number }[];
+  }[];
+  const tarball = info[0];
+  console.log(`${tarball.filename}: ${kB(tarball.size)} packed, ${kB(tarball.unpackedSize)} unpacked`);
+  for (const f of tarball.files) console.log(`  ${kB(f.size).padStart(9)}  ${f.path}`);
+  const maps = tarball.files.filter((f) => f.path.endsWith('.map'));
+  if (maps.length > 0) throw new Error(`source maps in the tarball: ${maps.map((f) => f.path).join(', ')}`);
+
+  step('install the tarball into a scratch project');
+  fs.mkdirSync(app);
+  fs.writeFileSync(
+    path.join(app, 'package.json'),
+    JSON.stringify({ name: 'app', private: true, type: 'module' }),
+  );
+  run(
+    'npm',
+    ['install', '--no-audit', '--no-fund', '--ignore-scripts', path.join(scratch, tarball.filename)],
+    app,
+  );
+
+  step('size of the core');
+  const dist = path.join(app, 'node_modules', 'fulcrum', 'dist');
+  const core = coreFiles(dist);
+  const code = Buffer.concat(core.map((f) => fs.readFileSync(path.join(dist, f))));
+  const gzipped = zlib.gzipSync(code, { level: 9 }).length;
+  console.log(
+    `min+gzip of ${core.join(' + ')}: ${kB(gzipped)} (budget ${kB(CORE_BUDGET)}; minified ${kB(code.length)})`,
+  );
+  const global = fs.readFileSync(path.join(dist, 'fulcrum.global.js'));
+  console.log(
+    `min+gzip of fulcrum.global.js (engine and render): ${kB(zlib.gzipSync(global, { level: 9 }).length)}`,
+  );
+
+  step('ESM (hello.mjs)');
+  fs.writeFileSync(
+    path.join(app, 'hello.mjs'),
+    `import * as fulcrum from 'fulcrum';\nimport * as render from 'fulcrum/render';\n${helloWorld}\n${renderInNode}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\n`,
+  );
+  console.log(run('node', ['hello.mjs'], app).trim());
+
+  step('CommonJS (hello.cjs)');
+  fs.writeFileSync(
+    path.join(app, 'hello.cjs'),
+    `const fulcrum = require('fulcrum');\nconst render = require('fulcrum/render');\n${helloWorld}\n${renderInNode}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\n`,
+  );
+  console.log(run('node', ['hello.cjs'], app).trim());
+
+  step('strict TypeScript against the installed declarations');
+  const tsc = path.join(root, 'node_modules', 'typescript', 'bin', 'tsc');
+  fs.writeFileSync(path.join(app, 'hello.ts'), typedHello);
+  fs.writeFileSync(path.join(app, 'hello-cjs.cts'), typedCjsHello);
+  const examples = readmeExamples();
+  const readme = examples.map((block, i) => {
+    fs.writeFileSync(path.join(app, `readme-${i + 1}.ts`), block);
+    return `readme-${i + 1}.ts`;
+  });
+  const common = [
+    '--strict',
+    '--noEmit',
+    '--skipLibCheck',
+    'false',
+    '--target',
+    'es2022',
+    '--lib',
+    'es2022,dom',
+  ];
+  const sets: [string, string[]][] = [
+    [
+      'node16',
+      ['--module', 'node16', '--moduleResolution', 'node16', 'hello.ts', 'hello-cjs.cts', ...readme],
+    ],
+    ['bundler', ['--module', 'esnext', '--moduleResolution', 'bundler', 'hello.ts', ...readme]],
+  ];
+  for (const [name, args] of sets) {
+    run('node', [tsc, ...common, ...args], app);
+    console.log(
+      `tsc --strict (${name}): hello.ts${name === 'node16' ? ', hello-cjs.cts' : ''} and ${readme.length} README example(s) typecheck`,
+    );
+  }
+
+  step('Chromium: a plain HTML page with <script src=".../fulcrum.global.js">');
+  console.log(await inChromium(app));
+
+  if (gzipped > CORE_BUDGET) {
+    throw new Error(`the core is ${kB(gzipped)} min+gzip, over the budget of ${kB(CORE_BUDGET)}`);
+  }
+  fs.rmSync(scratch, { recursive: true, force: true });
+  console.log('\npack:check passed');
+}
+
+main().catch((e) => {
+  console.error(
+    `\npack:check FAILED: ${e instanceof Error ? e.message : e}\n(scratch project kept in ${scratch})`,
+  );
+  process.exit(1);
+});
