@@ -477,6 +477,8 @@ export function readSnapshot(bytes: unknown, fresh: object, makeFresh: () => obj
   if (version !== SNAPSHOT_VERSION) {
     corrupt(`unsupported format version ${version} (this build reads version ${SNAPSHOT_VERSION})`);
   }
+  // a later format may give these bytes a meaning: this one refuses what it cannot read
+  if (view.getUint16(6, true) !== 0) corrupt('the reserved header bytes 6-7 are not 0');
   if (view.getUint32(8, true) !== buildFingerprint(makeFresh)) {
     corrupt('it was written by a different build of Fulcrum');
   }

@@ -466,6 +466,11 @@ describe('world snapshots', () => {
     const version = bytes.slice();
     version[4] = 99;
     bad(version, /bytes .*version 99/);
+    for (const at of [6, 7]) {
+      const reserved = bytes.slice();
+      reserved[at] = 1;
+      bad(reserved, /bytes .*reserved header bytes/);
+    }
     const build = bytes.slice();
     build[8] ^= 1;
     bad(build, /bytes .*different build/);
