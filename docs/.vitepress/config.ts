@@ -49,6 +49,7 @@ const guide: DefaultTheme.SidebarItem[] = [
   {
     text: 'Reference',
     items: [
+      { text: 'The API in brief', link: '/reference/api-in-brief' },
       { text: 'API contract', link: '/reference/api-contract' },
       { text: 'Rules worth knowing', link: '/reference/rules' },
       { text: 'Accepted ranges', link: '/reference/accepted-ranges' },
