@@ -143,6 +143,11 @@ try {
     );
   fs.writeFileSync(path.join(dir, 'script-tag.html'), example);
   const server = http.createServer((req, res) => {
+    // browsers ask for one; the pages are not about it
+    if (req.url === '/favicon.ico') {
+      res.statusCode = 204;
+      return res.end();
+    }
     const file = path.join(dir, decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname));
     if (!file.startsWith(dir) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
       const index = path.join(dir, 'index.html');
