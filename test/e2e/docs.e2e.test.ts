@@ -4,9 +4,10 @@
  * (a heading, no console or page error) and every link to this server must resolve; the gallery links
  * to the docs. The browser-only examples of the guides (docs/examples: canvas, PixiJS) run here too.
  */
-import { execFileSync } from 'node:child_process';
+import { execFile } from 'node:child_process';
 import { mkdirSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { join, relative, resolve } from 'node:path';
+import { promisify } from 'node:util';
 import { build } from 'esbuild';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
@@ -23,9 +24,11 @@ let browser: Browser;
 
 beforeAll(async () => {
   rmSync(DOCS_DIR, { recursive: true, force: true });
-  execFileSync('npm', ['run', 'docs', '--', '--outDir', DOCS_DIR, '--base', '/docs/'], {
+  // asynchronously: a worker blocked for the minute the build takes misses the test runner's calls
+  // ("Timeout calling onTaskUpdate" failed the run)
+  await promisify(execFile)('npm', ['run', 'docs', '--', '--outDir', DOCS_DIR, '--base', '/docs/'], {
     cwd: ROOT,
-    stdio: 'pipe',
+    maxBuffer: 64 * 1024 * 1024,
   });
   browser = await launchChromium();
 }, 240_000);
