@@ -10,6 +10,7 @@ import { golfDemo } from './demos/golf';
 import { heavyLoadsDemo } from './demos/heavy-loads';
 import { newtonsCradleDemo } from './demos/newtons-cradle';
 import { p5Demo } from './demos/p5-sketch';
+import { phaserDemo } from './demos/phaser';
 import { pixiDemo } from './demos/pixi';
 import { planetsDemo } from './demos/planets';
 import { pyramidDemo } from './demos/pyramid';
@@ -40,6 +41,7 @@ export const demos: readonly Demo[] = [
   stressDemo,
   pixiDemo,
   p5Demo,
+  phaserDemo,
 ];
 
 export function findDemo(id: string): Demo | undefined {
