@@ -54,7 +54,15 @@ export const phaserDemo: Demo = {
       ball.createShape(Shape.circle(0.35 + 0.05 * (i % 3)), { friction: 0.4, restitution: 0.4 });
     }
 
-    const state = { renderer: 'loading', frames: 0, drawnStep: -1, sprites: 0 };
+    /** the sprite of each body (read by the e2e test) */
+    const sprites = new Map<Body, Phaser.GameObjects.Image>();
+    const state = {
+      renderer: 'loading',
+      frames: 0,
+      drawnStep: -1,
+      sprites: 0,
+      scene: null as Phaser.Scene | null,
+    };
     let game: Phaser.Game | null = null;
     let disposed = false;
 
@@ -105,7 +113,7 @@ export const phaserDemo: Demo = {
       {
         key: 'fulcrum',
         create(this: Phaser.Scene) {
-          const sprites = new Map<Body, Phaser.GameObjects.Image>();
+          state.scene = this;
           const xf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
           const fitCamera = () => {
             const camera = this.cameras.main;
@@ -183,6 +191,7 @@ export const phaserDemo: Demo = {
     return {
       world,
       state,
+      sprites,
       dispose: () => {
         disposed = true;
         game?.destroy(true);
