@@ -1,7 +1,62 @@
-/** The demo gallery: `npm start` serves examples/ with Vite; `npm run build:gallery` builds it. */
+/**
+ * The demo gallery: `npm start` serves examples/ with Vite; `npm run build:gallery` builds it. The
+ * documentation site, once built (`npm run docs`, into docs/.vitepress/dist), is served beside it under
+ * /docs/, by the dev server and in the built gallery; the `<script>` build beside them at
+ * ./fulcrum.global.js, for the plain page examples/public/script-tag.html.
+ */
+import { cpSync, existsSync, readFileSync, statSync } from 'node:fs';
+import { extname, join, normalize, sep } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { build as esbuild } from 'esbuild';
 import { defineConfig, type Plugin } from 'vite';
+
+const DOCS_DIST = fileURLToPath(new URL('./docs/.vitepress/dist', import.meta.url));
+
+const TYPES: Record<string, string> = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json',
+  '.svg': 'image/svg+xml',
+  '.woff2': 'font/woff2',
+};
+
+const NOT_BUILT = `<!doctype html><meta charset="utf-8"><title>Fulcrum docs</title>
+<h1>The documentation is not built</h1>
+<p>Run <code>npm run docs</code> and reload, or <code>npm run docs:dev</code> to work on it.</p>`;
+
+/** Serves the built docs under /docs/ in the dev server and copies them into the built gallery. */
+function docsBesideGallery(): Plugin {
+  let outDir = '';
+  return {
+    name: 'fulcrum-docs',
+    configResolved(config) {
+      outDir = config.build.outDir;
+    },
+    configureServer(server) {
+      server.middlewares.use('/docs', (request, response) => {
+        const path = decodeURIComponent(new URL(request.url ?? '/', 'http://localhost').pathname);
+        let file = normalize(join(DOCS_DIST, path));
+        if (file !== DOCS_DIST && !file.startsWith(DOCS_DIST + sep)) {
+          response.writeHead(403).end();
+          return;
+        }
+        if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
+        if (!existsSync(DOCS_DIST)) {
+          response.writeHead(200, { 'content-type': TYPES['.html'] }).end(NOT_BUILT);
+        } else if (existsSync(file)) {
+          response.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
+          response.end(readFileSync(file));
+        } else {
+          response.writeHead(404).end('not found');
+        }
+      });
+    },
+    closeBundle() {
+      if (existsSync(DOCS_DIST)) cpSync(DOCS_DIST, join(outDir, 'docs'), { recursive: true });
+    },
+  };
+}
 
 /**
  * The `<script>` build at ./fulcrum.global.js, for examples/public/script-tag.html: bundled from
@@ -44,7 +99,7 @@ function scriptTagBuild(): Plugin {
 export default defineConfig({
   root: fileURLToPath(new URL('./examples', import.meta.url)),
   base: './',
-  plugins: [scriptTagBuild()],
+  plugins: [docsBesideGallery(), scriptTagBuild()],
   build: {
     outDir: fileURLToPath(new URL('./gallery-dist', import.meta.url)),
     emptyOutDir: true,

@@ -1,6 +1,17 @@
+import { fileURLToPath } from 'node:url';
 import { defineConfig } from 'vitest/config';
 
 export default defineConfig({
+  // the docs' examples (docs/examples, run by test/docs) import the package by name, as a user would
+  resolve: {
+    alias: [
+      { find: /^fulcrum$/, replacement: fileURLToPath(new URL('./src/index.ts', import.meta.url)) },
+      {
+        find: /^fulcrum\/render$/,
+        replacement: fileURLToPath(new URL('./src/render/index.ts', import.meta.url)),
+      },
+    ],
+  },
   test: {
     include: ['test/**/*.test.ts'],
     exclude: ['test/e2e/**', 'node_modules/**'],

@@ -134,7 +134,20 @@ try {
 </script>
 </body></html>`;
   fs.writeFileSync(path.join(dir, 'index.html'), page);
+  // the docs' script-tag example as a user copies it, with the CDN's file replaced by the installed one
+  const example = fs
+    .readFileSync(path.join(root, 'docs', 'examples', 'script-tag.html'), 'utf8')
+    .replace(
+      'https://unpkg.com/fulcrum/dist/fulcrum.global.js',
+      'node_modules/fulcrum/dist/fulcrum.global.js',
+    );
+  fs.writeFileSync(path.join(dir, 'script-tag.html'), example);
   const server = http.createServer((req, res) => {
+    // browsers ask for one; the pages are not about it
+    if (req.url === '/favicon.ico') {
+      res.statusCode = 204;
+      return res.end();
+    }
     const file = path.join(dir, decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname));
     if (!file.startsWith(dir) || !fs.existsSync(file) || fs.statSync(file).isDirectory()) {
       const index = path.join(dir, 'index.html');
@@ -166,7 +179,21 @@ try {
     };
     if (!result.ok) throw new Error(`in Chromium: ${result.message}`);
     if (errors.length > 0) throw new Error(`in Chromium, page errors: ${errors.join('; ')}`);
-    return result.message;
+    // the docs' example runs and draws: some pixel of its canvas is not the background (#15171d)
+    await tab.goto(`http://127.0.0.1:${port}/script-tag.html`);
+    await tab.waitForFunction(() => {
+      const canvas = document.querySelector('canvas');
+      const context = canvas?.getContext('2d');
+      if (!canvas || !context || canvas.width === 0) return false;
+      const data = context.getImageData(0, 0, canvas.width, canvas.height).data;
+      for (let i = 0; i < data.length; i += 4) {
+        if (data[i] !== 0x15 || data[i + 1] !== 0x17 || data[i + 2] !== 0x1d) return true;
+      }
+      return false;
+    });
+    if (errors.length > 0)
+      throw new Error(`in Chromium, docs/examples/script-tag.html: ${errors.join('; ')}`);
+    return `${result.message}; docs/examples/script-tag.html runs and draws`;
   } finally {
     await browser.close();
     server.close();

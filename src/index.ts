@@ -1,3 +1,7 @@
+/**
+ * `fulcrum`: the engine (worlds, bodies, shapes, joints, events, queries, snapshots).
+ * @module fulcrum
+ */
 export { FulcrumError } from './core/errors';
 export { stateHash } from './debug/state-hash';
 export { Body, type BodyDef, type BodyType } from './dynamics/body';

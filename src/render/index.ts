@@ -1,4 +1,7 @@
-/** `fulcrum/render`: draw a world on a canvas, run it in the browser, drag bodies with the pointer. */
+/**
+ * `fulcrum/render`: draw a world on a canvas, run it in the browser, drag bodies with the pointer.
+ * @module fulcrum/render
+ */
 export {
   type Color,
   colors,
