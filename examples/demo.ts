@@ -33,6 +33,8 @@ export interface Demo {
   description: string;
   view: CameraView;
   flags?: Partial<DebugDrawFlags>;
+  /** false for a demo whose own renderer ignores the gallery's draw switches: they are hidden */
+  drawSwitches?: boolean;
   /** steps one frame may take at most (default 4) */
   maxStepsPerFrame?: number;
   create(ctx: DemoContext): DemoInstance;

@@ -80,6 +80,7 @@ function startDemo(demo: Demo): void {
   current = demo;
   render.flags = { ...defaultDebugDrawFlags, ...demo.flags };
   for (const [key, input] of flagInputs) input.checked = render.flags[key];
+  $('flags').style.display = demo.drawSwitches === false ? 'none' : '';
   render.resize();
   render.camera.setView(demo.view);
   runner.maxStepsPerFrame = demo.maxStepsPerFrame ?? 4;

@@ -9,6 +9,8 @@ import { filteringDemo } from './demos/filtering';
 import { golfDemo } from './demos/golf';
 import { heavyLoadsDemo } from './demos/heavy-loads';
 import { newtonsCradleDemo } from './demos/newtons-cradle';
+import { p5Demo } from './demos/p5-sketch';
+import { phaserDemo } from './demos/phaser';
 import { pixiDemo } from './demos/pixi';
 import { planetsDemo } from './demos/planets';
 import { pyramidDemo } from './demos/pyramid';
@@ -38,6 +40,8 @@ export const demos: readonly Demo[] = [
   tumblerDemo,
   stressDemo,
   pixiDemo,
+  p5Demo,
+  phaserDemo,
 ];
 
 export function findDemo(id: string): Demo | undefined {

@@ -112,3 +112,44 @@ export async function mouseDrag(
   await page.waitForTimeout(holdMs);
   await page.mouse.up();
 }
+
+/** The state a demo that draws with its own renderer (PixiJS, p5, Phaser) exposes. */
+interface OwnRendererState {
+  frames: number;
+  drawnStep: number;
+}
+
+type StateWindow = Window & {
+  gallery: { instance: { state?: Partial<OwnRendererState> }; runner: { stepCount: number } };
+};
+
+/** True when the current demo draws with its own renderer, which loads asynchronously. */
+export async function drawsItself(page: Page): Promise<boolean> {
+  return page.evaluate(
+    () => typeof (window as unknown as StateWindow).gallery.instance.state?.drawnStep === 'number',
+  );
+}
+
+/** Waits until the current demo's own renderer has loaded and drawn a frame. */
+export async function waitForOwnRenderer(page: Page, timeout = 30_000): Promise<void> {
+  await page.waitForFunction(
+    () => ((window as unknown as StateWindow).gallery.instance.state?.frames ?? 0) > 0,
+    undefined,
+    { timeout },
+  );
+}
+
+/**
+ * Waits until the current demo's own renderer has drawn the runner's latest step (it draws on its own
+ * animation frames, so a step taken by hand shows on its next frame).
+ */
+export async function waitForDrawnStep(page: Page, timeout = 20_000): Promise<void> {
+  await page.waitForFunction(
+    () => {
+      const g = (window as unknown as StateWindow).gallery;
+      return g.instance.state?.drawnStep === g.runner.stepCount;
+    },
+    undefined,
+    { timeout },
+  );
+}

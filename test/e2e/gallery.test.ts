@@ -8,11 +8,14 @@ import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { demos } from '../../examples/registry';
 import { type Browser, launchChromium } from './browser';
 import {
+  drawsItself,
   mouseDrag,
   openDemo,
   restartPaused,
   shootStage,
   stepByHand,
+  waitForDrawnStep,
+  waitForOwnRenderer,
   waitForSteps,
   worldToPage,
 } from './gallery-page';
@@ -49,31 +52,23 @@ describe('every demo', () => {
     it(`${demo.id}: opens without errors, draws and moves`, async () => {
       const open = await openDemo(browser.context, url, demo.id);
       try {
-        if (demo.id === 'pixi') {
-          // the external renderer loads asynchronously: wait for it to draw
-          await open.page.waitForFunction(
-            () =>
-              ((window as unknown as GalleryWindow).gallery.instance.state as { frames: number }).frames > 3,
-            undefined,
-            { timeout: 20_000 },
-          );
-        }
-        // The canvas demos are started again, paused, and stepped by hand: the two pictures are then
-        // steps 3 and 15 of the demo on any machine. Taken as the runner went, a slow machine's first
-        // picture could come late enough that a demo which settles had stopped (the slingshot's bird on
-        // its spring: 10 pixels changed, in one CI run of three). The external renderer loads
-        // asynchronously and draws on its own: that demo keeps running.
-        const byHand = demo.id !== 'pixi';
-        if (byHand) {
-          await restartPaused(open.page);
-          await stepByHand(open.page, 3);
-        }
+        // Every demo is started again, paused, and stepped by hand: the two pictures are then steps 3
+        // and 15 of the demo on any machine. Taken as the runner went, a slow machine's first picture
+        // could come late enough that a demo which settles had stopped (the slingshot's bird on its
+        // spring: 10 pixels changed, in one CI run of three). A demo that draws with its own renderer
+        // (PixiJS, p5, Phaser) loads it asynchronously and draws on its own animation frames: the test
+        // waits for it to load, and after each batch of steps for it to have drawn the last one.
+        await restartPaused(open.page);
+        const ownRenderer = await drawsItself(open.page);
+        if (ownRenderer) await waitForOwnRenderer(open.page);
+        await stepByHand(open.page, 3);
+        if (ownRenderer) await waitForDrawnStep(open.page);
         const first = await shootStage(open.page);
         const { ink, colors } = inkStats(first);
         expect(ink, 'share of the canvas that is not background').toBeGreaterThan(0.01);
         expect(colors).toBeGreaterThan(3);
-        if (byHand) await stepByHand(open.page, 12);
-        else await waitForSteps(open.page, 12);
+        await stepByHand(open.page, 12);
+        if (ownRenderer) await waitForDrawnStep(open.page);
         // kept for a person to look at
         const second = await shootStage(open.page, resolve(SCREENSHOTS, `${demo.id}.png`));
         const changed = differingShare(first, second) * first.width * first.height;
