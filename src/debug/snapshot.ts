@@ -79,8 +79,8 @@ import {
  * data: the fresh world's own are kept.
  */
 
-export const SNAPSHOT_MAGIC = [0x46, 0x4c, 0x43, 0x53]; // "FLCS"
-export const SNAPSHOT_VERSION = 1;
+const SNAPSHOT_MAGIC = [0x46, 0x4c, 0x43, 0x53]; // "FLCS"
+const SNAPSHOT_VERSION = 1;
 const HEADER_SIZE = 20;
 
 /**
