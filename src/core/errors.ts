@@ -23,18 +23,6 @@ export function fail(argument: string, value: unknown, expected: string): never 
   throw new FulcrumError(`${argument} must be ${expected}, got ${show(value)}`);
 }
 
-export function checkFinite(argument: string, value: unknown): number {
-  if (typeof value !== 'number' || !Number.isFinite(value)) fail(argument, value, 'a finite number');
-  return value;
-}
-
-export function checkPositive(argument: string, value: unknown): number {
-  if (typeof value !== 'number' || !Number.isFinite(value) || value <= 0) {
-    fail(argument, value, 'a finite number > 0');
-  }
-  return value;
-}
-
 export function checkNonNegative(argument: string, value: unknown): number {
   if (typeof value !== 'number' || !Number.isFinite(value) || value < 0) {
     fail(argument, value, 'a finite number >= 0');
@@ -52,15 +40,6 @@ export function checkInteger(argument: string, value: unknown, min: number, max:
     fail(argument, value, `an integer in [${min}, ${max}]`);
   }
   return value;
-}
-
-export function checkVec2(argument: string, value: unknown): { x: number; y: number } {
-  if (typeof value !== 'object' || value === null) fail(argument, value, 'a vector { x, y }');
-  const v = value as { x: unknown; y: unknown };
-  if (typeof v.x !== 'number' || !Number.isFinite(v.x) || typeof v.y !== 'number' || !Number.isFinite(v.y)) {
-    fail(argument, value, 'a vector { x, y } of finite numbers');
-  }
-  return { x: v.x as number, y: v.y as number };
 }
 
 /** Rejects keys that a definition object does not know, so typos do not pass silently. */

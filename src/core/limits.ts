@@ -54,7 +54,7 @@ export function checkRange(argument: string, value: unknown, min: number, max: n
 }
 
 /** A finite number whose magnitude is at most `bound`. */
-export function checkMagnitude(argument: string, value: unknown, bound: number): number {
+function checkMagnitude(argument: string, value: unknown, bound: number): number {
   if (typeof value !== 'number' || !(Math.abs(value) <= bound)) {
     fail(argument, value, `a number in [-${bound}, ${bound}]`);
   }

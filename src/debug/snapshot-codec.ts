@@ -53,7 +53,7 @@ type TypedArrayCtor =
 export type AnyTypedArray = InstanceType<TypedArrayCtor>;
 
 /** Element type codes of TYPED values: the index in this list. Never reorder (it is the format). */
-export const TYPED_ARRAY_TYPES: readonly TypedArrayCtor[] = [
+const TYPED_ARRAY_TYPES: readonly TypedArrayCtor[] = [
   Int8Array,
   Uint8Array,
   Uint8ClampedArray,

@@ -20,7 +20,7 @@ import { WeldJoint } from '../dynamics/joints/weld-joint';
 import { WheelJoint } from '../dynamics/joints/wheel-joint';
 import { ShapeHandle } from '../dynamics/shape';
 import { ShapeStore } from '../dynamics/shape-store';
-import { WorldCore } from '../dynamics/world-core';
+import { WorkingMemory, WorldCore } from '../dynamics/world-core';
 import {
   type AnyTypedArray,
   ByteReader,
@@ -79,8 +79,8 @@ import {
  * data: the fresh world's own are kept.
  */
 
-export const SNAPSHOT_MAGIC = [0x46, 0x4c, 0x43, 0x53]; // "FLCS"
-export const SNAPSHOT_VERSION = 1;
+const SNAPSHOT_MAGIC = [0x46, 0x4c, 0x43, 0x53]; // "FLCS"
+const SNAPSHOT_VERSION = 1;
 const HEADER_SIZE = 20;
 
 /**
@@ -113,9 +113,12 @@ const CLASSES: Record<string, abstract new (...args: never[]) => object> = {
 
 const CLASS_KEYS = new Map<unknown, string>(Object.entries(CLASSES).map(([key, ctor]) => [ctor, key]));
 
-/** Objects that are not state (event handlers): written as SKIP, the fresh world keeps its own. */
+/**
+ * Objects that are not state (event handlers; a world's WorkingMemory, written before every read):
+ * written as SKIP, the fresh world keeps its own.
+ */
 function isExcluded(value: object): boolean {
-  return value instanceof EventDispatcher;
+  return value instanceof EventDispatcher || value instanceof WorkingMemory;
 }
 
 /** Properties whose value is the user's: kept only when plain data. */

@@ -6,7 +6,7 @@ import { ContactFlag, type ContactStore } from './contact-store';
 import type { WorldCore } from './world-core';
 
 /** The default of `world.maxContactsPerShape`. An enum for the reason in dynamics/body-store.ts. */
-export enum ContactLimit {
+enum ContactLimit {
   /**
    * Above what shapes that do not overlap need: the most contacts counted against one shape over
    * the benchmark and test scenes is 24 (10 cm grains poured in a box), 19 in the tumbler. Finer

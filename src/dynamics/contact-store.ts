@@ -34,7 +34,7 @@ export enum MC {
   Y1 = 9,
   /**
    * for a manifold without points: a lower bound of the shapes' distance when it was computed, or -1
-   * (see lastSeparatedDistance)
+   * (see CollideContext.separatedDistance)
    */
   GAP = 10,
   STRIDE = 11,

@@ -1,4 +1,5 @@
 import type { IntList } from '../collision/int-list';
+import { Emitter } from '../core/emitter';
 import { fail } from '../core/errors';
 import type { Vec2 } from '../math/vec2';
 import type { Body } from './body';
@@ -92,8 +93,6 @@ export interface WorldEvents {
   warning: WarningEvent[];
 }
 
-type Handler = (e: never) => void;
-
 const EVENT_NAMES = [
   'contactBegin',
   'contactEnd',
@@ -125,35 +124,23 @@ const EVENT_NAMES = [
  * events (its handles read isValid === false).
  */
 export class EventDispatcher {
-  private readonly handlers = new Map<string, Handler[]>();
+  private readonly handlers = new Emitter<WorldEventMap>();
   private cache: WorldEvents | null = null;
   private sleepEvents: BodyEvent[] = [];
   private wakeEvents: BodyEvent[] = [];
 
   constructor(private readonly world: World) {}
 
-  on(event: string, handler: Handler): () => void {
+  /** World.on, its arguments checked: plain JavaScript may pass anything. */
+  on<K extends keyof WorldEventMap>(event: K, handler: (e: WorldEventMap[K]) => void): () => void {
     if (!(EVENT_NAMES as readonly string[]).includes(event))
       fail('event', event, `one of ${EVENT_NAMES.join(', ')}`);
     if (typeof handler !== 'function') fail('handler', handler, 'a function');
-    let list = this.handlers.get(event);
-    if (!list) {
-      list = [];
-      this.handlers.set(event, list);
-    }
-    list.push(handler);
-    return () => {
-      const l = this.handlers.get(event);
-      const i = l ? l.indexOf(handler) : -1;
-      if (l && i >= 0) l.splice(i, 1);
-    };
+    return this.handlers.on(event, handler);
   }
 
   emitStep(event: 'preStep' | 'postStep', dt: number): void {
-    const list = this.handlers.get(event);
-    if (!list || list.length === 0) return;
-    const e = { dt };
-    for (const h of list.slice()) (h as (e: StepEvent) => void)(e);
+    if (this.handlers.has(event)) this.handlers.emit(event, { dt });
   }
 
   /** Called at the end of step(): drops the old arrays and runs the handlers. */
@@ -168,36 +155,30 @@ export class EventDispatcher {
     islands.slept.clear();
     islands.woken.clear();
     const warned = this.world.core.events.warningCount > 0;
+    const handlers = this.handlers;
     let any = false;
-    for (const list of this.handlers.values()) if (list.length > 0) any = true;
+    for (const name of EVENT_NAMES) if (handlers.has(name)) any = true;
     if (!any && !warned) return;
     const events = this.current();
     // a warning nobody listens to goes to the console, so that a crowd does not go unnoticed
-    if (warned && (this.handlers.get('warning')?.length ?? 0) === 0) {
+    if (warned && !handlers.has('warning')) {
       for (const w of events.warning) console.warn(`Fulcrum: ${w.message}`);
     }
     // ends first: a pair dropped between steps (a filter or sensor flag changed, a joint created) and
     // found again in this step has both its end and its new begin in this record, in that order
-    this.run('contactEnd', events.contactEnd);
-    this.run('sensorEnd', events.sensorEnd);
-    this.run('contactBegin', events.contactBegin);
-    this.run('contactHit', events.contactHit);
-    this.run('sensorBegin', events.sensorBegin);
-    this.run('sleep', events.sleep);
-    this.run('wake', events.wake);
-    this.run('warning', events.warning);
+    handlers.emitEach('contactEnd', events.contactEnd);
+    handlers.emitEach('sensorEnd', events.sensorEnd);
+    handlers.emitEach('contactBegin', events.contactBegin);
+    handlers.emitEach('contactHit', events.contactHit);
+    handlers.emitEach('sensorBegin', events.sensorBegin);
+    handlers.emitEach('sleep', events.sleep);
+    handlers.emitEach('wake', events.wake);
+    handlers.emitEach('warning', events.warning);
   }
 
   /** Makes the record into objects now, while every shape it names still has its handle. */
   settle(): void {
     if (this.cache === null) this.current();
-  }
-
-  private run(event: string, items: readonly unknown[]): void {
-    const list = this.handlers.get(event);
-    if (!list || list.length === 0 || items.length === 0) return;
-    const handlers = list.slice();
-    for (const item of items) for (const h of handlers) (h as (e: unknown) => void)(item);
   }
 
   current(): WorldEvents {

@@ -1,31 +1,12 @@
 import { IndexBound } from '../core/index-bound';
-import { collideReach } from '../geometry/collide-reach';
 import { collidePacked } from '../geometry/manifold';
-import {
-  lastSeparatedDistance,
-  lastSeparatingAxis,
-  referenceOwnerOfId,
-  setReferenceHint,
-  setSeparatingAxisHint,
-  VERTEX_PAIR_MIN_GAP,
-} from '../geometry/manifold-polygon';
+import { referenceOwnerOfId, VERTEX_PAIR_MIN_GAP } from '../geometry/manifold-polygon';
 import { Pack } from '../geometry/packed';
-import type { Manifold, ManifoldPoint } from '../geometry/types';
 import { BodyFlag } from './body-store';
 import { WarningRearm } from './contact-limit';
 import { ContactFlag, MC } from './contact-store';
 import { WarningCode } from './event-buffers';
 import type { WorldCore } from './world-core';
-
-/** A manifold point of its own class, so that its fields stay unboxed doubles (see ScratchPoint). */
-class Point implements ManifoldPoint {
-  x = 0;
-  y = 0;
-  separation = 0;
-  id = 0;
-}
-
-const manifold: Manifold = { normalX: 0, normalY: 0, pointCount: 0, points: [new Point(), new Point()] };
 
 /**
  * Creates contacts for the new overlapping pairs the broad phase found, WorldCore.shouldPair allowed
@@ -121,6 +102,7 @@ export function updateContacts(core: WorldCore): void {
   const shapeKind = shapes.kind;
   const proxyKey = shapes.proxyKey;
   const packed = shapes.packed;
+  const manifold = core.work.manifold;
   const points = manifold.points;
   const bodyPx = bodies.px;
   const bodyPy = bodies.py;
@@ -129,6 +111,7 @@ export function updateContacts(core: WorldCore): void {
   const cache = contacts.manifoldCache;
   const originExtent = shapes.originExtent;
   const tolerance = core.settings.manifoldTolerance;
+  const context = core.work.collide;
   for (let c = 0, n = contacts.slotCount; c < n; c++) {
     if (alive[c] === 0) continue;
     const bodyA = contactBodyA[c];
@@ -216,9 +199,11 @@ export function updateContacts(core: WorldCore): void {
           continue;
         }
       }
-      setReferenceHint(pointCount[c] > 0 ? referenceOwnerOfId(pointId[k0]) : -1);
-      setSeparatingAxisHint(separatingAxis[c]);
-      collideReach[0] = reach;
+      context.reach = reach;
+      context.referenceHint = pointCount[c] > 0 ? referenceOwnerOfId(pointId[k0]) : -1;
+      context.axisHint = separatingAxis[c];
+      context.separatingAxis = 0;
+      context.separatedDistance = -1;
       collidePacked(
         shapeKind[shapeA],
         shapeKind[shapeB],
@@ -228,15 +213,16 @@ export function updateContacts(core: WorldCore): void {
         shapeB * Pack.STRIDE,
         core.fillTransform(bodyB, core.xfB),
         manifold,
+        context,
       );
-      separatingAxis[c] = lastSeparatingAxis();
+      separatingAxis[c] = context.separatingAxis;
       // keep the manifold in A's frame with the pose it holds for
       cache[o + MC.TX] = tx;
       cache[o + MC.TY] = ty;
       cache[o + MC.RC] = rc;
       cache[o + MC.RS] = rs;
-      // collide leaves the normal of a manifold without points as it was, the last one computed by
-      // any world: 0 keeps the snapshot free of it (it is never read)
+      // collide leaves the normal of a manifold without points as it was, the last one computed:
+      // 0 keeps the snapshot free of it (it is never read)
       const nx = manifold.pointCount > 0 ? manifold.normalX : 0;
       const ny = manifold.pointCount > 0 ? manifold.normalY : 0;
       cache[o + MC.NX] = ac * nx + as * ny;
@@ -247,7 +233,7 @@ export function updateContacts(core: WorldCore): void {
         cache[o + MC.X0 + 2 * j] = ac * px + as * py;
         cache[o + MC.Y0 + 2 * j] = ac * py - as * px;
       }
-      if (manifold.pointCount === 0) cache[o + MC.GAP] = lastSeparatedDistance();
+      if (manifold.pointCount === 0) cache[o + MC.GAP] = context.separatedDistance;
       flags |= ContactFlag.CACHED;
     }
     contactFlags[c] = flags;

@@ -28,7 +28,7 @@ export interface ShapeDef {
   userData?: unknown;
 }
 
-export const SHAPE_DEF_KEYS = [
+const SHAPE_DEF_KEYS = [
   'density',
   'friction',
   'restitution',
@@ -56,7 +56,7 @@ function checkBits(argument: string, value: unknown): number {
 }
 
 /** Validates a filter and fills defaults: category 1, mask all, group 0. */
-export function checkFilter(argument: string, filter: unknown): Filter {
+function checkFilter(argument: string, filter: unknown): Filter {
   if (typeof filter !== 'object' || filter === null) fail(argument, filter, 'an object');
   checkKnownKeys(argument, filter, FILTER_KEYS);
   const f = filter as Partial<Filter>;

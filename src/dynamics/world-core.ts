@@ -9,10 +9,11 @@ import {
   type Settings,
 } from '../core/settings';
 import { packedBounds } from '../geometry/bounds';
+import { CollideContext } from '../geometry/collide-context';
 import { centroidExtent, maxExtentFrom, minExtent } from '../geometry/extent';
 import { computeMass } from '../geometry/mass';
 import { Pack } from '../geometry/packed';
-import type { MassData } from '../geometry/types';
+import type { Manifold, ManifoldPoint, MassData } from '../geometry/types';
 import type { Bounds } from '../math/aabb';
 import { makeBounds } from '../math/aabb';
 import type { Transform } from '../math/vec2';
@@ -49,8 +50,32 @@ function makeScratchTransform(): Transform {
   return { p: new ScratchPoint(), q: new ScratchRot() };
 }
 
-const massScratch: MassData = { mass: 0, centerX: 0, centerY: 0, inertia: 0 };
-const boundsScratch: Bounds = makeBounds();
+/** A manifold point of its own class, for the reason above. */
+class ScratchManifoldPoint implements ManifoldPoint {
+  x = 0;
+  y = 0;
+  separation = 0;
+  id = 0;
+}
+
+/**
+ * A world's working memory for the narrow phase and the mass and bounds updates: written before it is
+ * read in every use, so it is not state (the snapshot skips it) and no module holds any.
+ * @internal
+ */
+export class WorkingMemory {
+  /** The narrow phase's manifold. */
+  readonly manifold: Manifold = {
+    normalX: 0,
+    normalY: 0,
+    pointCount: 0,
+    points: [new ScratchManifoldPoint(), new ScratchManifoldPoint()],
+  };
+  /** The collide calls' hints, results and working memory. */
+  readonly collide = new CollideContext();
+  readonly bounds: Bounds = makeBounds();
+  readonly mass: MassData = { mass: 0, centerX: 0, centerY: 0, inertia: 0 };
+}
 
 /**
  * The engine's state and the internal operations that keep it consistent (contacts linked to bodies,
@@ -139,6 +164,7 @@ export class WorldCore implements PairFilter {
   readonly xfB: Transform = makeScratchTransform();
   /** the body transform refreshShapeBounds passes (an object: doubles passed to a call are boxed) */
   readonly xfBounds: Transform = makeScratchTransform();
+  readonly work = new WorkingMemory();
 
   constructor(lengthUnitsPerMeter: number) {
     this.settings = makeSettings(lengthUnitsPerMeter);
@@ -158,6 +184,7 @@ export class WorldCore implements PairFilter {
   refreshShapeBounds(shape: number): void {
     const shapes = this.shapes;
     const b = shapes.body[shape];
+    const boundsScratch = this.work.bounds;
     packedBounds(shapes.packed, shape * Pack.STRIDE, this.fillTransform(b, this.xfBounds), boundsScratch);
     shapes.minX[shape] = boundsScratch.minX;
     shapes.minY[shape] = boundsScratch.minY;
@@ -211,6 +238,7 @@ export class WorldCore implements PairFilter {
     this.poseEpoch++;
     const bodies = this.bodies;
     const shapes = this.shapes;
+    const massScratch = this.work.mass;
     const kind = bodies.kind[b];
     let mass = 0;
     let mx = 0;

@@ -1,8 +1,8 @@
 import type { Transform } from '../math/vec2';
-import { collideReach } from './collide-reach';
+import type { CollideContext } from './collide-context';
 import { LINEAR_SLOP } from './constants';
 import { Pack } from './packed';
-import { closestBetweenSegments, makeSegmentClosest, segmentPair } from './segment-distance';
+import { closestBetweenSegments } from './segment-distance';
 import type { Manifold } from './types';
 
 /** sin of the largest angle between two capsules that still rest on each other with two points */
@@ -14,14 +14,10 @@ const MIN_DIRECTION_DISTANCE = 0.1 * LINEAR_SLOP;
 /** Id of the single point (two-point manifolds use 0 and 1: the end of B the point came from). */
 const SINGLE_POINT_ID = 2;
 
-const closest = makeSegmentClosest();
-
 /**
- * A point for writePoint, in A's frame: a point (x, y) on B's core, the normal n from A to B, B's core
- * separation along n and the two radii. An array: V8 puts on the heap every double passed to a call
- * it does not inline, and this runs for every capsule pair of every step.
+ * A point for writePoint, in A's frame (CollideContext.candidate): a point (x, y) on B's core, the
+ * normal n from A to B, B's core separation along n and the two radii.
  */
-const candidate = new Float64Array(7);
 enum K {
   X = 0,
   Y = 1,
@@ -33,7 +29,7 @@ enum K {
 }
 
 /** Writes manifold point `index` from `candidate`, with feature id `id`. */
-function writePoint(xfA: Transform, out: Manifold, index: number, id: number): void {
+function writePoint(candidate: Float64Array, xfA: Transform, out: Manifold, index: number, id: number): void {
   const coreSeparation = candidate[K.CORE_SEPARATION];
   const rA = candidate[K.RA];
   const rB = candidate[K.RB];
@@ -62,7 +58,11 @@ export function collideRoundedSegmentPair(
   baseB: number,
   xfB: Transform,
   out: Manifold,
+  context: CollideContext,
 ): void {
+  const candidate = context.candidate;
+  const closest = context.closest;
+  const segmentPair = context.segments;
   const a = baseA + Pack.VERTICES;
   const b = baseB + Pack.VERTICES;
   const a1x = data[a];
@@ -77,7 +77,7 @@ export function collideRoundedSegmentPair(
   const rB = data[baseB + Pack.RADIUS];
   candidate[K.RA] = rA;
   candidate[K.RB] = rB;
-  const speculativeDistance = collideReach[0];
+  const speculativeDistance = context.reach;
   out.pointCount = 0;
   const qa = xfA.q;
   const qb = xfB.q;
@@ -101,7 +101,7 @@ export function collideRoundedSegmentPair(
   segmentPair[5] = q1y;
   segmentPair[6] = q2x;
   segmentPair[7] = q2y;
-  closestBetweenSegments(closest);
+  closestBetweenSegments(segmentPair, closest);
   const radius = rA + rB;
   const limit = speculativeDistance + radius;
   if (!(closest.distanceSq < limit * limit)) return;
@@ -153,7 +153,7 @@ export function collideRoundedSegmentPair(
         candidate[K.NX] = sx;
         candidate[K.NY] = sy;
         candidate[K.CORE_SEPARATION] = coreSeparation;
-        writePoint(xfA, out, out.pointCount, k);
+        writePoint(candidate, xfA, out, out.pointCount, k);
         out.pointCount += 1;
       }
     }
@@ -172,6 +172,6 @@ export function collideRoundedSegmentPair(
   candidate[K.NX] = sx;
   candidate[K.NY] = sy;
   candidate[K.CORE_SEPARATION] = coreSeparation;
-  writePoint(xfA, out, 0, SINGLE_POINT_ID);
+  writePoint(candidate, xfA, out, 0, SINGLE_POINT_ID);
   out.pointCount = 1;
 }

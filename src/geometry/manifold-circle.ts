@@ -1,6 +1,5 @@
 import type { Transform } from '../math/vec2';
-import { collideReach } from './collide-reach';
-import { noteSeparatedDistance } from './manifold-polygon';
+import type { CollideContext } from './collide-context';
 import { Pack } from './packed';
 import type { Manifold } from './types';
 
@@ -47,8 +46,9 @@ export function collideCircles(
   baseB: number,
   xfB: Transform,
   out: Manifold,
+  context: CollideContext,
 ): void {
-  const speculativeDistance = collideReach[0];
+  const speculativeDistance = context.reach;
   out.pointCount = 0;
   const qa = xfA.q;
   const qb = xfB.q;
@@ -67,7 +67,7 @@ export function collideCircles(
   const distance = Math.sqrt(dx * dx + dy * dy);
   const separation = distance - rA - rB;
   if (!(separation < speculativeDistance)) {
-    noteSeparatedDistance(separation);
+    context.separatedDistance = separation;
     return;
   }
   // concentric circles have no preferred direction: push along +y
@@ -95,8 +95,9 @@ export function collideCircleRoundedSegment(
   baseB: number,
   xfB: Transform,
   out: Manifold,
+  context: CollideContext,
 ): void {
-  const speculativeDistance = collideReach[0];
+  const speculativeDistance = context.reach;
   out.pointCount = 0;
   const k = baseB + Pack.VERTICES;
   const q1x = data[k];
@@ -126,7 +127,7 @@ export function collideCircleRoundedSegment(
   const distance = Math.sqrt(dx * dx + dy * dy);
   const separation = distance - rA - rB;
   if (!(separation < speculativeDistance)) {
-    noteSeparatedDistance(separation);
+    context.separatedDistance = separation;
     return;
   }
   let ux: number;
@@ -155,8 +156,9 @@ export function collideCirclePolygon(
   baseB: number,
   xfB: Transform,
   out: Manifold,
+  context: CollideContext,
 ): void {
-  const speculativeDistance = collideReach[0];
+  const speculativeDistance = context.reach;
   out.pointCount = 0;
   const qa = xfA.q;
   const qb = xfB.q;
@@ -181,7 +183,7 @@ export function collideCirclePolygon(
   }
   // beyond an edge's line: at least that far apart
   if (maxSeparation - radius >= speculativeDistance) {
-    noteSeparatedDistance(maxSeparation - radius);
+    context.separatedDistance = maxSeparation - radius;
     return;
   }
   const k1 = baseB + Pack.VERTICES + Pack.VERTEX_STRIDE * edge;
@@ -219,7 +221,7 @@ export function collideCirclePolygon(
   }
   const separation = distance - radius;
   if (!(separation < speculativeDistance)) {
-    noteSeparatedDistance(separation);
+    context.separatedDistance = separation;
     return;
   }
   writeFromB(xfB, ux, uy, cx - rA * ux, cy - rA * uy, px + rB * ux, py + rB * uy, separation, out);

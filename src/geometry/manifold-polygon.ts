@@ -1,9 +1,9 @@
 import type { Transform } from '../math/vec2';
-import { collideReach } from './collide-reach';
+import type { CollideContext, WorkPolygon } from './collide-context';
 import { LINEAR_SLOP, REFERENCE_FACE_TOLERANCE } from './constants';
 import { Pack } from './packed';
-import { closestBetweenSegments, makeSegmentClosest, segmentPair } from './segment-distance';
-import { MAX_POLYGON_VERTICES, type Manifold } from './types';
+import { closestBetweenSegments } from './segment-distance';
+import type { Manifold } from './types';
 
 /*
  * Polygon contacts (capsules and segments act as 2-vertex rounded polygons here), all computed in
@@ -18,60 +18,20 @@ import { MAX_POLYGON_VERTICES, type Manifold } from './types';
  * for a vertex pair, reference vertex), bit 8 set when B owns the reference face, bit 9 vertex pair.
  */
 
-/** Core polygon in A's frame: vertices, outward unit edge normals, radius. */
-interface WorkPolygon {
-  count: number;
-  radius: number;
-  readonly x: Float64Array;
-  readonly y: Float64Array;
-  readonly nx: Float64Array;
-  readonly ny: Float64Array;
-}
-
-function makeWorkPolygon(): WorkPolygon {
-  const n = MAX_POLYGON_VERTICES;
-  return {
-    count: 0,
-    radius: 0,
-    x: new Float64Array(n),
-    y: new Float64Array(n),
-    nx: new Float64Array(n),
-    ny: new Float64Array(n),
-  };
-}
-
-const polyA = makeWorkPolygon();
-const polyB = makeWorkPolygon();
-const closest = makeSegmentClosest();
 /** Feature id bits. Enums, not consts, for the reason in dynamics/body-store.ts. */
 enum IdBit {
   B_REFERENCE = 1 << 8,
   VERTEX_PAIR = 1 << 9,
 }
 
-/**
- * Which polygon owned the reference face of this pair's previous manifold (0 = A, 1 = B, -1 = none).
- * Faces under load are nearly parallel and their separations nearly equal; without memory the
- * reference face would swap between the two shapes as they tilt by a milliradian, renaming every
- * point and turning the normal, and a large pile would never come to rest. With memory the owner
- * only changes when the other face is clearly better.
+/*
+ * The reference hint (CollideContext.referenceHint): which polygon owned the reference face of this
+ * pair's previous manifold. Faces under load are nearly parallel and their separations nearly equal;
+ * without memory the reference face would swap between the two shapes as they tilt by a milliradian,
+ * renaming every point and turning the normal, and a large pile would never come to rest. With memory
+ * the owner only changes when the other face is clearly better.
  */
-let referenceHint = -1;
 const STICKY_REFERENCE_TOLERANCE = 0.5 * LINEAR_SLOP;
-
-/** Sets the reference-face owner of the previous manifold for the next collide call (see above). */
-export function setReferenceHint(ownerOfPreviousManifold: number): void {
-  referenceHint = ownerOfPreviousManifold;
-}
-
-/**
- * Forgets both hints. `collide` calls it after every pair, so a hint applies to the one call it was
- * set for and a later caller that sets none (a query, a test) gets the memoryless result.
- */
-export function clearCollideHints(): void {
-  referenceHint = -1;
-  axisHint = 0;
-}
 
 /** The owner bit of a polygon contact id: 1 when B owned the reference face. */
 export function referenceOwnerOfId(id: number): number {
@@ -88,50 +48,15 @@ export const VERTEX_PAIR_MIN_GAP = 0.1 * LINEAR_SLOP;
  * the contact limit along one edge normal usually still is a step later. Testing that edge first
  * costs one edge instead of the full two-way SAT; when it still separates, the full SAT would find a
  * separation at least as large and return no points as well. Axis = edge + 1, plus 8 when the edge is
- * B's; 0 = none.
+ * B's; 0 = none (CollideContext.axisHint in, separatingAxis out).
  */
-let axisHint = 0;
-let separatingAxis = 0;
-/**
- * When the last call found the pair apart along an edge normal: that separation less both radii, a
- * lower bound of the shapes' distance (the other shape lies beyond the edge's line); else -1.
- */
-let separatedDistance = -1;
 enum Axis {
   /** added to B's face index in `separatingAxis` */
   B = 8,
 }
 
-/** Sets the separating axis of the pair's previous collide call (0 = none) and clears the result. */
-export function setSeparatingAxisHint(axis: number): void {
-  axisHint = axis;
-  separatingAxis = 0;
-  separatedDistance = -1;
-}
-
-/**
- * A lower bound of the shapes' distance from the last collide call that followed
- * setSeparatingAxisHint, when it found them apart along an edge normal; -1 otherwise.
- */
-export function lastSeparatedDistance(): number {
-  return separatedDistance;
-}
-
-/** For the other colliders: the pair was found apart, `distance` (less both radii) is at most its distance. */
-export function noteSeparatedDistance(distance: number): void {
-  separatedDistance = distance;
-}
-
-/** The axis that separated the pair in the last collide call (0 when none did, or not a polygon pair). */
-export function lastSeparatingAxis(): number {
-  return separatingAxis;
-}
-
-/** Separations computed by the functions below (a double returned from a call would be boxed). */
-const separationOut = new Float64Array(1);
-
-/** Smallest signed distance of q's vertices to edge `i` of p (as in maxSeparation), to separationOut. */
-function edgeSeparation(p: WorkPolygon, i: number, q: WorkPolygon): void {
+/** Smallest signed distance of q's vertices to edge `i` of p (as in maxSeparation), to `out[0]`. */
+function edgeSeparation(p: WorkPolygon, i: number, q: WorkPolygon, out: Float64Array): void {
   const nx = p.nx[i];
   const ny = p.ny[i];
   const vx = p.x[i];
@@ -143,13 +68,12 @@ function edgeSeparation(p: WorkPolygon, i: number, q: WorkPolygon): void {
     const d = nx * (qx[j] - vx) + ny * (qy[j] - vy);
     if (d < min) min = d;
   }
-  separationOut[0] = min;
+  out[0] = min;
 }
 
-/** B's transform relative to A (q = qA^T qB, p = qA^T (pB - pA)): cos, sin, x, y. */
-const relative = new Float64Array(4);
-
+/** B's transform relative to A (q = qA^T qB, p = qA^T (pB - pA)): cos, sin, x, y, to `relative`. */
 function setRelative(
+  relative: Float64Array,
   ac: number,
   as: number,
   ax: number,
@@ -168,7 +92,7 @@ function setRelative(
 }
 
 /** A's packed shape as it is (A's frame is its body's frame). */
-function loadPolygonA(data: Float64Array, base: number): void {
+function loadPolygonA(polyA: WorkPolygon, data: Float64Array, base: number): void {
   const x = polyA.x;
   const y = polyA.y;
   const nx = polyA.nx;
@@ -185,7 +109,7 @@ function loadPolygonA(data: Float64Array, base: number): void {
 }
 
 /** B's packed shape moved into A's frame by `relative`. */
-function loadPolygonB(data: Float64Array, base: number): void {
+function loadPolygonB(polyB: WorkPolygon, relative: Float64Array, data: Float64Array, base: number): void {
   const relC = relative[0];
   const relS = relative[1];
   const relX = relative[2];
@@ -211,9 +135,9 @@ function loadPolygonB(data: Float64Array, base: number): void {
 
 /**
  * Largest over p's edges of the smallest signed distance of q's vertices to that edge. Returns the
- * edge; the separation goes to separationOut.
+ * edge; the separation goes to `out[0]`.
  */
-function maxSeparation(p: WorkPolygon, q: WorkPolygon): number {
+function maxSeparation(p: WorkPolygon, q: WorkPolygon, out: Float64Array): number {
   const px = p.x;
   const py = p.y;
   const pnx = p.nx;
@@ -238,7 +162,7 @@ function maxSeparation(p: WorkPolygon, q: WorkPolygon): number {
       bestEdge = i;
     }
   }
-  separationOut[0] = best;
+  out[0] = best;
   return bestEdge;
 }
 
@@ -247,16 +171,14 @@ function maxSeparation(p: WorkPolygon, q: WorkPolygon): number {
  * the normal from the reference to the incident shape, and per point the point on the incident core,
  * its core separation and id.
  */
-const local = new Float64Array(2 + 3 * 2);
 enum L {
   NX = 0,
   NY = 1,
   POINTS = 2,
 }
-const localIds = new Int32Array(2);
 
 /** Whether B's face of largest separation is the reference face (step 2 and the reference hint). */
-function referenceFromB(separationA: number, separationB: number): boolean {
+function referenceFromB(referenceHint: number, separationA: number, separationB: number): boolean {
   return referenceHint === 1
     ? !(separationA > separationB + STICKY_REFERENCE_TOLERANCE)
     : referenceHint === 0
@@ -265,39 +187,43 @@ function referenceFromB(separationA: number, separationB: number): boolean {
 }
 
 /** The manifold of the loaded polyA and polyB in `local`; returns the point count. */
-function collideLoaded(): number {
-  const speculativeDistance = collideReach[0];
+function collideLoaded(context: CollideContext): number {
+  const polyA = context.polyA;
+  const polyB = context.polyB;
+  const separationOut = context.separation;
+  const axisHint = context.axisHint;
+  const speculativeDistance = context.reach;
   const limit = speculativeDistance + polyA.radius + polyB.radius;
   if (axisHint !== 0) {
     const edge = (axisHint - 1) & 7;
     const ofB = axisHint > Axis.B;
     const p = ofB ? polyB : polyA;
     if (edge < p.count) {
-      edgeSeparation(p, edge, ofB ? polyA : polyB);
+      edgeSeparation(p, edge, ofB ? polyA : polyB, separationOut);
       if (separationOut[0] >= limit) {
-        separatingAxis = axisHint;
-        separatedDistance = separationOut[0] - polyA.radius - polyB.radius;
+        context.separatingAxis = axisHint;
+        context.separatedDistance = separationOut[0] - polyA.radius - polyB.radius;
         return 0;
       }
     }
   }
-  const edgeA = maxSeparation(polyA, polyB);
+  const edgeA = maxSeparation(polyA, polyB, separationOut);
   const separationA = separationOut[0];
   if (separationA >= limit) {
-    separatingAxis = edgeA + 1;
-    separatedDistance = separationA - polyA.radius - polyB.radius;
+    context.separatingAxis = edgeA + 1;
+    context.separatedDistance = separationA - polyA.radius - polyB.radius;
     return 0;
   }
-  const edgeB = maxSeparation(polyB, polyA);
+  const edgeB = maxSeparation(polyB, polyA, separationOut);
   const separationB = separationOut[0];
   if (separationB >= limit) {
-    separatingAxis = Axis.B + edgeB + 1;
-    separatedDistance = separationB - polyA.radius - polyB.radius;
+    context.separatingAxis = Axis.B + edgeB + 1;
+    context.separatedDistance = separationB - polyA.radius - polyB.radius;
     return 0;
   }
 
-  const flip = referenceFromB(separationA, separationB);
-  referenceFlip = flip;
+  const flip = referenceFromB(context.referenceHint, separationA, separationB);
+  context.referenceFlip = flip;
   const ref = flip ? polyB : polyA;
   const inc = flip ? polyA : polyB;
   const refEdge = flip ? edgeB : edgeA;
@@ -325,6 +251,7 @@ function collideLoaded(): number {
     }
   }
   const inc2 = inc1 + 1 === inc.count ? 0 : inc1 + 1;
+  const faces = context.faces;
   faces[F.NX] = nx;
   faces[F.NY] = ny;
   faces[F.V1X] = v1x;
@@ -338,14 +265,10 @@ function collideLoaded(): number {
   faces[F.SEPARATION] = separation;
   faces[F.R_REF] = rRef;
   faces[F.R_INC] = rInc;
-  return contactFromFaces(owner, refEdge, ref2, inc1, inc2);
+  return contactFromFaces(context, owner, refEdge, ref2, inc1, inc2);
 }
 
-/**
- * The inputs of contactFromFaces, in A's frame: a double passed to a call that is not inlined is boxed
- * on the heap, and this runs for every polygon pair of every step.
- */
-const faces = new Float64Array(13);
+/** The inputs of contactFromFaces, in A's frame (CollideContext.faces). */
 enum F {
   NX = 0,
   NY = 1,
@@ -368,7 +291,17 @@ enum F {
  * inc2 (w2), the reference face's SAT separation, both shapes' radii. Writes the points to `local`;
  * returns how many.
  */
-function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: number, inc2: number): number {
+function contactFromFaces(
+  context: CollideContext,
+  owner: number,
+  refEdge: number,
+  ref2: number,
+  inc1: number,
+  inc2: number,
+): number {
+  const faces = context.faces;
+  const local = context.local;
+  const localIds = context.localIds;
   const nx = faces[F.NX];
   const ny = faces[F.NY];
   const v1x = faces[F.V1X];
@@ -382,11 +315,13 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
   const separation = faces[F.SEPARATION];
   const rRef = faces[F.R_REF];
   const rInc = faces[F.R_INC];
-  const speculativeDistance = collideReach[0];
+  const speculativeDistance = context.reach;
   local[L.NX] = nx;
   local[L.NY] = ny;
   if (separation > VERTEX_PAIR_MIN_GAP) {
     // cores apart: when the edges' true distance exceeds the face separation, two vertices are closest
+    const segmentPair = context.segments;
+    const closest = context.closest;
     segmentPair[0] = v1x;
     segmentPair[1] = v1y;
     segmentPair[2] = v2x;
@@ -395,7 +330,7 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
     segmentPair[5] = w1y;
     segmentPair[6] = w2x;
     segmentPair[7] = w2y;
-    closestBetweenSegments(closest);
+    closestBetweenSegments(segmentPair, closest);
     const gap = separation + VERTEX_PAIR_MIN_GAP;
     if (closest.distanceSq > gap * gap) {
       const distance = Math.sqrt(closest.distanceSq);
@@ -463,9 +398,15 @@ function contactFromFaces(owner: number, refEdge: number, ref2: number, inc1: nu
  * The edge of largest separation of a rectangle whose normals 0 and 1 put the other shape's centre at
  * d0 and d1 from its own, the two reaching reach0 and reach1 towards each other along them (edges 2
  * and 3 are the opposite sides), the first of equals as in maxSeparation; the separation goes to
- * separationOut.
+ * `out[0]`.
  */
-function bestRectangleEdge(d0: number, d1: number, reach0: number, reach1: number): number {
+function bestRectangleEdge(
+  d0: number,
+  d1: number,
+  reach0: number,
+  reach1: number,
+  out: Float64Array,
+): number {
   let edge = 0;
   let best = d0 - reach0;
   if (d1 - reach1 > best) {
@@ -480,7 +421,7 @@ function bestRectangleEdge(d0: number, d1: number, reach0: number, reach1: numbe
     edge = 3;
     best = -d1 - reach1;
   }
-  separationOut[0] = best;
+  out[0] = best;
   return edge;
 }
 
@@ -491,8 +432,15 @@ function bestRectangleEdge(d0: number, d1: number, reach0: number, reach1: numbe
  * is the smallest vertex distance maxSeparation finds by trying every vertex. Faces, ids and points
  * then follow as there. Returns the point count (points in `local`).
  */
-function collideRectangles(data: Float64Array, baseA: number, baseB: number): number {
-  const speculativeDistance = collideReach[0];
+function collideRectangles(
+  context: CollideContext,
+  data: Float64Array,
+  baseA: number,
+  baseB: number,
+): number {
+  const relative = context.relative;
+  const separationOut = context.separation;
+  const speculativeDistance = context.reach;
   const rc = relative[0];
   const rs = relative[1];
   const rx = relative[2];
@@ -533,27 +481,27 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   const dA1 = n1x * dx + n1y * dy;
   const reachA0 = hA0 + hB0 * c00 + hB1 * c01;
   const reachA1 = hA1 + hB0 * c10 + hB1 * c11;
-  const edgeA = bestRectangleEdge(dA0, dA1, reachA0, reachA1);
+  const edgeA = bestRectangleEdge(dA0, dA1, reachA0, reachA1, separationOut);
   const separationA = separationOut[0];
   if (separationA >= limit) {
-    separatingAxis = edgeA + 1;
-    separatedDistance = separationA - radiusA - radiusB;
+    context.separatingAxis = edgeA + 1;
+    context.separatedDistance = separationA - radiusA - radiusB;
     return 0;
   }
   const dB0 = -(m0x * dx + m0y * dy);
   const dB1 = -(m1x * dx + m1y * dy);
   const reachB0 = hB0 + hA0 * c00 + hA1 * c10;
   const reachB1 = hB1 + hA0 * c01 + hA1 * c11;
-  const edgeB = bestRectangleEdge(dB0, dB1, reachB0, reachB1);
+  const edgeB = bestRectangleEdge(dB0, dB1, reachB0, reachB1, separationOut);
   const separationB = separationOut[0];
   if (separationB >= limit) {
-    separatingAxis = Axis.B + edgeB + 1;
-    separatedDistance = separationB - radiusA - radiusB;
+    context.separatingAxis = Axis.B + edgeB + 1;
+    context.separatedDistance = separationB - radiusA - radiusB;
     return 0;
   }
 
-  const flip = referenceFromB(separationA, separationB);
-  referenceFlip = flip;
+  const flip = referenceFromB(context.referenceHint, separationA, separationB);
+  context.referenceFlip = flip;
   const refEdge = flip ? edgeB : edgeA;
   const ref2 = (refEdge + 1) & 3;
   const r1 = (flip ? vB : vA) + refEdge * Pack.VERTEX_STRIDE;
@@ -618,6 +566,7 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
     w2x = rc * x2 - rs * y2 + rx;
     w2y = rs * x2 + rc * y2 + ry;
   }
+  const faces = context.faces;
   faces[F.NX] = nx;
   faces[F.NY] = ny;
   faces[F.V1X] = v1x;
@@ -631,14 +580,12 @@ function collideRectangles(data: Float64Array, baseA: number, baseB: number): nu
   faces[F.SEPARATION] = flip ? separationB : separationA;
   faces[F.R_REF] = flip ? radiusB : radiusA;
   faces[F.R_INC] = flip ? radiusA : radiusB;
-  return contactFromFaces(flip ? IdBit.B_REFERENCE : 0, refEdge, ref2, inc1, inc2);
+  return contactFromFaces(context, flip ? IdBit.B_REFERENCE : 0, refEdge, ref2, inc1, inc2);
 }
-
-/** Whether the last collideLoaded or collideRectangles took its reference face from B. */
-let referenceFlip = false;
 
 /** Writes `count` points of `local` to the world manifold (points halfway between the surfaces). */
 function writeManifold(
+  context: CollideContext,
   xf: Transform,
   count: number,
   data: Float64Array,
@@ -654,9 +601,10 @@ function writeManifold(
   const s = xf.q.s;
   const px = xf.p.x;
   const py = xf.p.y;
+  const local = context.local;
   const nx = local[L.NX];
   const ny = local[L.NY];
-  const flip = referenceFlip;
+  const flip = context.referenceFlip;
   const sign = flip ? -1 : 1;
   out.normalX = sign * (c * nx - s * ny);
   out.normalY = sign * (s * nx + c * ny);
@@ -673,13 +621,13 @@ function writeManifold(
     point.x = c * mx - s * my + px;
     point.y = s * mx + c * my + py;
     point.separation = coreSeparation - rRef - rInc;
-    point.id = localIds[i];
+    point.id = context.localIds[i];
   }
 }
 
 /**
  * The manifold of two packed polygon-like shapes (polygons, capsules, segments; see packed.ts), both
- * records in `data`, A placed at `xfA` and B at `xfB`.
+ * records in `data`, A placed at `xfA` and B at `xfB`; hints in and results out through `context`.
  */
 export function collidePackedPolygons(
   data: Float64Array,
@@ -688,19 +636,20 @@ export function collidePackedPolygons(
   baseB: number,
   xfB: Transform,
   out: Manifold,
+  context: CollideContext,
 ): void {
   const ac = xfA.q.c;
   const as = xfA.q.s;
   const ax = xfA.p.x;
   const ay = xfA.p.y;
-  setRelative(ac, as, ax, ay, xfB.q.c, xfB.q.s, xfB.p.x, xfB.p.y);
+  setRelative(context.relative, ac, as, ax, ay, xfB.q.c, xfB.q.s, xfB.p.x, xfB.p.y);
   let count: number;
   if (data[baseA + Pack.RECTANGLE] === 1 && data[baseB + Pack.RECTANGLE] === 1) {
-    count = collideRectangles(data, baseA, baseB);
+    count = collideRectangles(context, data, baseA, baseB);
   } else {
-    loadPolygonA(data, baseA);
-    loadPolygonB(data, baseB);
-    count = collideLoaded();
+    loadPolygonA(context.polyA, data, baseA);
+    loadPolygonB(context.polyB, context.relative, data, baseB);
+    count = collideLoaded(context);
   }
-  writeManifold(xfA, count, data, baseA, baseB, out);
+  writeManifold(context, xfA, count, data, baseA, baseB, out);
 }

@@ -1,8 +1,8 @@
 import type { Transform } from '../math/vec2';
-import { collideReach } from './collide-reach';
+import type { CollideContext } from './collide-context';
 import { collideRoundedSegmentPair } from './manifold-capsule';
 import { collideCirclePolygon, collideCircleRoundedSegment, collideCircles } from './manifold-circle';
-import { clearCollideHints, collidePackedPolygons } from './manifold-polygon';
+import { collidePackedPolygons } from './manifold-polygon';
 import { Pack, packGeometry } from './packed';
 import type { Geometry, Manifold } from './types';
 
@@ -27,6 +27,7 @@ type PairFunction = (
   baseB: number,
   xfB: Transform,
   out: Manifold,
+  context: CollideContext,
 ) => void;
 
 function collideNothing(
@@ -36,6 +37,7 @@ function collideNothing(
   _baseB: number,
   _xfB: Transform,
   out: Manifold,
+  _context: CollideContext,
 ): void {
   out.pointCount = 0;
 }
@@ -68,7 +70,8 @@ const SWAPPED: readonly number[] = [0, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1,
  * (see packed.ts: the narrow phase passes the shape store's records), placed at `xfA` and `xfB`:
  * world normal from A to B, up to two world points halfway between the surfaces, each with its
  * separation (< 0 overlapping) and feature id. Only points with separation below the speculative
- * distance in `collideReach[0]` are kept (set it first: see collide-reach.ts). Allocation free.
+ * distance `context.reach` are kept; the context's hints and results are described in
+ * collide-context.ts (set them first). Allocation free.
  */
 export function collidePacked(
   kindA: number,
@@ -79,21 +82,22 @@ export function collidePacked(
   baseB: number,
   xfB: Transform,
   out: Manifold,
+  context: CollideContext,
 ): void {
   const pair = kindA * 4 + kindB;
   if (SWAPPED[pair] === 1) {
-    PAIRS[pair](data, baseB, xfB, baseA, xfA, out);
+    PAIRS[pair](data, baseB, xfB, baseA, xfA, out, context);
     out.normalX = -out.normalX;
     out.normalY = -out.normalY;
   } else {
-    PAIRS[pair](data, baseA, xfA, baseB, xfB, out);
+    PAIRS[pair](data, baseA, xfA, baseB, xfB, out, context);
   }
-  clearCollideHints();
 }
 
-const scratch = new Float64Array(2 * Pack.STRIDE);
-
-/** collidePacked for geometry objects: packs them first. */
+/**
+ * collidePacked for geometry objects: packs them first (into `context.packed`), without hints (the
+ * memoryless result).
+ */
 export function collide(
   a: Geometry,
   xfA: Transform,
@@ -101,9 +105,13 @@ export function collide(
   xfB: Transform,
   speculativeDistance: number,
   out: Manifold,
+  context: CollideContext,
 ): void {
-  packGeometry(a, scratch, 0);
-  packGeometry(b, scratch, Pack.STRIDE);
-  collideReach[0] = speculativeDistance;
-  collidePacked(a.kind, b.kind, scratch, 0, xfA, Pack.STRIDE, xfB, out);
+  const packed = context.packed;
+  packGeometry(a, packed, 0);
+  packGeometry(b, packed, Pack.STRIDE);
+  context.reach = speculativeDistance;
+  context.referenceHint = -1;
+  context.axisHint = 0;
+  collidePacked(a.kind, b.kind, packed, 0, xfA, Pack.STRIDE, xfB, out, context);
 }

@@ -18,18 +18,14 @@ function clamp01(x: number): number {
 }
 
 /**
- * The segments of the next closestBetweenSegments call: p1, p2, q1, q2 (x, y each). The narrow phase
- * calls it for many pairs a step, and a double passed to a call V8 does not inline is boxed on the heap.
- */
-export const segmentPair = new Float64Array(8);
-
-/**
- * Minimises |P(s) - Q(t)|^2 over the unit square for the segments in `segmentPair`: s from the
+ * Minimises |P(s) - Q(t)|^2 over the unit square for the segments in `segmentPair` (p1, p2, q1, q2,
+ * x and y each: an array, because the narrow phase calls it for many pairs a step and a double passed
+ * to a call V8 does not inline is boxed on the heap): s from the
  * infinite lines clamped to [0, 1], the best t for that s, and if t had to be clamped, the best s for
  * the clamped t. Both segments must have non-zero length (shapes guarantee at least LINEAR_SLOP).
  * Parallel segments take s = 0.
  */
-export function closestBetweenSegments(out: SegmentClosest): void {
+export function closestBetweenSegments(segmentPair: Float64Array, out: SegmentClosest): void {
   const p1x = segmentPair[0];
   const p1y = segmentPair[1];
   const p2x = segmentPair[2];

@@ -74,7 +74,7 @@ export function support(xs: Float64Array, ys: Float64Array, count: number, dx: n
   return best;
 }
 
-export function copyVertex(dst: SimplexVertex, src: SimplexVertex): void {
+function copyVertex(dst: SimplexVertex, src: SimplexVertex): void {
   dst.ax = src.ax;
   dst.ay = src.ay;
   dst.bx = src.bx;

@@ -26,7 +26,7 @@ export function makeTOIOutput(): TOIOutput {
 }
 
 /** In metres; pass the world's slop (scaled by lengthUnitsPerMeter) as `linearSlop`. */
-export const DEFAULT_LINEAR_SLOP = 0.005;
+const DEFAULT_LINEAR_SLOP = 0.005;
 /** Each iteration costs one GJK call; grazing passes of fast spinning bodies take the most. */
 const MAX_ITERATIONS = 50;
 

@@ -18,8 +18,3 @@ export interface Bounds {
 export function makeBounds(): Bounds {
   return { minX: 0, minY: 0, maxX: 0, maxY: 0 };
 }
-
-/** @internal */
-export function boundsOverlap(a: Bounds, b: Bounds): boolean {
-  return !(b.minX > a.maxX || b.minY > a.maxY || a.minX > b.maxX || a.minY > b.maxY);
-}

@@ -2,6 +2,8 @@
  * `fulcrum/render`: draw a world on a canvas, run it in the browser, drag bodies with the pointer.
  * @module fulcrum/render
  */
+
+export { Emitter } from '../core/emitter';
 export {
   type Color,
   colors,
@@ -19,7 +21,6 @@ export {
 export { Camera, type CameraView } from './camera';
 export { CanvasDebugDraw, type Sprite } from './canvas-draw';
 export { cssColor, toCss } from './color';
-export { Emitter } from './emitter';
 export { Interpolator } from './interpolation';
 export {
   type DragEvent,

@@ -1,9 +1,9 @@
+import { Emitter } from '../core/emitter';
 import { Limits } from '../core/limits';
 import type { Body } from '../dynamics/body';
 import type { MouseJoint } from '../dynamics/joints/mouse-joint';
 import type { World } from '../dynamics/world';
 import type { Vec2 } from '../math/vec2';
-import { Emitter } from './emitter';
 import { clientToCanvas, type Render } from './render';
 
 export interface PointerOptions {

@@ -1,3 +1,4 @@
+import { Emitter } from '../core/emitter';
 import { FulcrumError } from '../core/errors';
 import {
   type Color,
@@ -12,7 +13,6 @@ import type { Vec2 } from '../math/vec2';
 import { requireBrowser } from './browser';
 import { Camera, type CameraView } from './camera';
 import { CanvasDebugDraw, type Sprite } from './canvas-draw';
-import { Emitter } from './emitter';
 import type { Interpolator } from './interpolation';
 
 /** How one body looks; anything left out keeps the default. */

@@ -1,6 +1,6 @@
+import { Emitter } from '../core/emitter';
 import type { World } from '../dynamics/world';
 import { requireBrowser } from './browser';
-import { Emitter } from './emitter';
 import { Interpolator } from './interpolation';
 import type { Render } from './render';
 

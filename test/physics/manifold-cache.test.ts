@@ -2,19 +2,16 @@ import { describe, expect, it } from 'vitest';
 import { buildFulcrumWorld } from '../../scenes/build-fulcrum';
 import { tumbler } from '../../scenes/tumbler';
 import { ContactFlag, MC } from '../../src/dynamics/contact-store';
-import { collideReach } from '../../src/geometry/collide-reach';
+import { CollideContext } from '../../src/geometry/collide-context';
 import { collidePacked } from '../../src/geometry/manifold';
-import {
-  referenceOwnerOfId,
-  setReferenceHint,
-  setSeparatingAxisHint,
-} from '../../src/geometry/manifold-polygon';
+import { referenceOwnerOfId } from '../../src/geometry/manifold-polygon';
 import { Pack } from '../../src/geometry/packed';
 import { makeManifold } from '../../src/geometry/types';
 import { Shape, World } from '../../src/index';
 import { groundWorld, pyramid } from '../helpers/world';
 
 const fresh = makeManifold();
+const context = new CollideContext();
 
 interface Deviation {
   /** contacts whose manifold the narrow phase kept, and all touching ones */
@@ -73,9 +70,9 @@ function compare(world: World, poses: Poses, out: Deviation): void {
     else out.kept++;
     const sa = contacts.shapeA[c];
     const sb = contacts.shapeB[c];
-    setReferenceHint(referenceOwnerOfId(contacts.pointId[2 * c]));
-    setSeparatingAxisHint(contacts.separatingAxis[c]);
-    collideReach[0] = core.settings.speculativeDistance;
+    context.referenceHint = referenceOwnerOfId(contacts.pointId[2 * c]);
+    context.axisHint = contacts.separatingAxis[c];
+    context.reach = core.settings.speculativeDistance;
     collidePacked(
       shapes.kind[sa],
       shapes.kind[sb],
@@ -85,6 +82,7 @@ function compare(world: World, poses: Poses, out: Deviation): void {
       sb * Pack.STRIDE,
       transformOf(poses, b),
       fresh,
+      context,
     );
     if (empty) {
       if (fresh.pointCount > 0) out.emptyMismatch++;

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { collideReach } from '../../../src/geometry/collide-reach';
+import { CollideContext } from '../../../src/geometry/collide-context';
 import { collide, collidePacked } from '../../../src/geometry/manifold';
 import { VERTEX_PAIR_MIN_GAP } from '../../../src/geometry/manifold-polygon';
 import { Pack, packGeometry } from '../../../src/geometry/packed';
@@ -17,7 +17,7 @@ const SPECULATIVE = 0.02;
 
 function run(a: Geometry, xfA: Transform, b: Geometry, xfB: Transform, speculative = SPECULATIVE): Manifold {
   const m = makeManifold();
-  collide(a, xfA, b, xfB, speculative, m);
+  collide(a, xfA, b, xfB, speculative, m, new CollideContext());
   return m;
 }
 
@@ -353,8 +353,9 @@ describe('collide: rectangles', () => {
       data[Pack.STRIDE + Pack.RECTANGLE] = 0;
     }
     const m = makeManifold();
-    collideReach[0] = SPECULATIVE;
-    collidePacked(a.kind, b.kind, data, 0, xfA, Pack.STRIDE, xfB, m);
+    const context = new CollideContext();
+    context.reach = SPECULATIVE;
+    collidePacked(a.kind, b.kind, data, 0, xfA, Pack.STRIDE, xfB, m, context);
     return m;
   }
 

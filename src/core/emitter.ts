@@ -1,4 +1,7 @@
-/** A small typed event emitter: `on` returns the function that unsubscribes. */
+/**
+ * A small typed event emitter: `on` returns the function that unsubscribes. The world's events
+ * (dynamics/events.ts) and the render layer's runner, renderer and pointer share it.
+ */
 export class Emitter<Events extends object> {
   private readonly handlers = new Map<keyof Events, ((e: never) => void)[]>();
 
@@ -24,6 +27,17 @@ export class Emitter<Events extends object> {
     const list = this.handlers.get(event);
     if (!list || list.length === 0) return;
     for (const handler of list.slice()) (handler as (e: Events[K]) => void)(e);
+  }
+
+  /**
+   * emit for each of `items` in order; the handlers are those subscribed when it starts (one that
+   * unsubscribes during the delivery still gets the rest).
+   */
+  emitEach<K extends keyof Events>(event: K, items: readonly Events[K][]): void {
+    const list = this.handlers.get(event);
+    if (!list || list.length === 0 || items.length === 0) return;
+    const handlers = list.slice();
+    for (const item of items) for (const handler of handlers) (handler as (e: Events[K]) => void)(item);
   }
 
   has(event: keyof Events): boolean {
