@@ -1,5 +1,6 @@
 import { growF64, growI32, growU8 } from '../core/grow';
 import { IndexBound } from '../core/index-bound';
+import { findRoot, unionRoots } from '../core/union-find';
 import { V } from './body-solver';
 import { BodyKind, type BodyStore } from './body-store';
 import { ContactConstraints } from './contact-solver';
@@ -64,19 +65,19 @@ export class FineIslands {
     for (const joint of joints) {
       const a = joint.bodyA.slot;
       const b = joint.bodyB.slot;
-      if (kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) this.union(a, b);
+      if (kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) unionRoots(this.parent, a, b);
     }
     for (let j = 0; j < cc.supportCount; j++) {
       const i = cc.supports[j] >> 1;
       const a = cc.ids[i * 3];
       const b = cc.ids[i * 3 + 1];
-      marks[this.find(kind[a] === BodyKind.DYNAMIC ? a : b)] |= 1;
+      marks[findRoot(this.parent, kind[a] === BodyKind.DYNAMIC ? a : b)] |= 1;
     }
     for (const joint of joints) {
       const a = joint.bodyA.slot;
       const b = joint.bodyB.slot;
-      if (kind[a] === BodyKind.DYNAMIC) marks[this.find(a)] |= 2;
-      if (kind[b] === BodyKind.DYNAMIC) marks[this.find(b)] |= 2;
+      if (kind[a] === BodyKind.DYNAMIC) marks[findRoot(this.parent, a)] |= 2;
+      if (kind[b] === BodyKind.DYNAMIC) marks[findRoot(this.parent, b)] |= 2;
     }
     return this.list(cc, kind, awake, awakeCount);
   }
@@ -87,7 +88,7 @@ export class FineIslands {
     for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
       const a = ids[i * 3] & IndexBound.MAX;
       const b = ids[i * 3 + 1] & IndexBound.MAX;
-      if (kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) this.union(a, b);
+      if (kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) unionRoots(this.parent, a, b);
     }
   }
 
@@ -102,7 +103,7 @@ export class FineIslands {
     let count = 0;
     for (let i = 0; i < awakeCount; i++) {
       const b = awake[i];
-      const isFine = kind[b] === BodyKind.DYNAMIC && this.marks[this.find(b)] === 1;
+      const isFine = kind[b] === BodyKind.DYNAMIC && this.marks[findRoot(this.parent, b)] === 1;
       fine[b] = isFine ? 1 : 0;
       if (isFine) this.bodies[count++] = b;
       else this.coarse[coarse++] = b;
@@ -111,26 +112,5 @@ export class FineIslands {
     this.count = count;
     if (this.update.length < count * V.STRIDE) this.update = growF64(this.update, 2 * count * V.STRIDE);
     return count > 0;
-  }
-
-  private find(b: number): number {
-    const parent = this.parent;
-    let root = b;
-    while (parent[root] !== root) root = parent[root];
-    while (parent[b] !== root) {
-      const next = parent[b];
-      parent[b] = root;
-      b = next;
-    }
-    return root;
-  }
-
-  /** Joins two islands; the smaller slot becomes the root (a defined order). */
-  private union(a: number, b: number): void {
-    const ra = this.find(a);
-    const rb = this.find(b);
-    if (ra === rb) return;
-    if (ra < rb) this.parent[rb] = ra;
-    else this.parent[ra] = rb;
   }
 }

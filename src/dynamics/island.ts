@@ -1,6 +1,7 @@
 import { IntList } from '../collision/int-list';
 import { growF64, growI32 } from '../core/grow';
 import { TIME_TO_SLEEP } from '../core/settings';
+import { findRoot, unionRoots } from '../core/union-find';
 import { BodyFlag, BodyKind, type BodyStore, S } from './body-store';
 
 /**
@@ -26,26 +27,9 @@ export class Islands {
     for (let i = 0; i < awakeCount; i++) this.parent[awake[i]] = awake[i];
   }
 
-  private find(b: number): number {
-    const parent = this.parent;
-    let root = b;
-    while (parent[root] !== root) root = parent[root];
-    // path compression
-    while (parent[b] !== root) {
-      const next = parent[b];
-      parent[b] = root;
-      b = next;
-    }
-    return root;
-  }
-
   /** Joins the islands of two awake dynamic bodies; the smaller slot becomes the root (defined order). */
   union(a: number, b: number): void {
-    const ra = this.find(a);
-    const rb = this.find(b);
-    if (ra === rb) return;
-    if (ra < rb) this.parent[rb] = ra;
-    else this.parent[ra] = rb;
+    unionRoots(this.parent, a, b);
   }
 
   /** Puts to sleep every island whose bodies have all been slow long enough. */
@@ -54,13 +38,13 @@ export class Islands {
     for (let i = 0; i < awakeCount; i++) minSleep[awake[i]] = Number.POSITIVE_INFINITY;
     for (let i = 0; i < awakeCount; i++) {
       const b = awake[i];
-      const r = this.find(b);
+      const r = findRoot(this.parent, b);
       const t = (bodies.flags[b] & BodyFlag.ALLOW_SLEEP) !== 0 ? bodies.sleepTime[b] : 0;
       if (t < minSleep[r]) minSleep[r] = t;
     }
     for (let i = 0; i < awakeCount; i++) {
       const b = awake[i];
-      const r = this.find(b);
+      const r = findRoot(this.parent, b);
       if (minSleep[r] < TIME_TO_SLEEP) continue;
       // the root has the smallest slot of its island, so it is reached first and names the island
       const island = r === b ? this.newIsland() : bodies.sleepIsland[r];

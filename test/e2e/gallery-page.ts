@@ -99,17 +99,21 @@ export async function worldToPage(
   }, p);
 }
 
-/** Drags with the mouse from `from` to `to` (page pixels) in small moves, holding for `holdMs`. */
+/**
+ * Drags with the mouse from `from` to `to` (page pixels) in small moves, and holds there while the
+ * runner takes `holdSteps` steps: counted in simulation steps, not milliseconds, so the pull lasts as
+ * long however fast the page draws.
+ */
 export async function mouseDrag(
   page: Page,
   from: { x: number; y: number },
   to: { x: number; y: number },
-  holdMs = 400,
+  holdSteps = 24,
 ): Promise<void> {
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
   await page.mouse.move(to.x, to.y, { steps: 12 });
-  await page.waitForTimeout(holdMs);
+  await waitForSteps(page, (await stepCount(page)) + holdSteps);
   await page.mouse.up();
 }
 

@@ -130,7 +130,7 @@ describe('pointer drag', () => {
       const before = await topBox(open.page);
       const from = await worldToPage(open.page, before);
       const to = await worldToPage(open.page, { x: before.x + 2, y: before.y + 3 });
-      await mouseDrag(open.page, from, to, 600);
+      await mouseDrag(open.page, from, to, 36);
       const after = await topBox(open.page);
       expect(after.y - before.y).toBeGreaterThan(1.5);
       expect(after.x - before.x).toBeGreaterThan(0.8);
@@ -152,7 +152,7 @@ describe('pointer drag', () => {
       const before = await topBox(open.page);
       const from = await worldToPage(open.page, before);
       const to = await worldToPage(open.page, { x: before.x - 2, y: before.y + 3 });
-      await mouseDrag(open.page, from, to, 600);
+      await mouseDrag(open.page, from, to, 36);
       const after = await topBox(open.page);
       expect(after.y - before.y).toBeGreaterThan(1.5);
       expect(before.x - after.x).toBeGreaterThan(0.8);
@@ -223,7 +223,7 @@ describe('the slingshot game', () => {
         if (!before.bird) throw new Error('no bird in the sling');
         const from = await worldToPage(page, before.bird);
         const to = await worldToPage(page, { x: before.anchor.x + PULL.x, y: before.anchor.y + PULL.y });
-        await mouseDrag(page, from, to, 500);
+        await mouseDrag(page, from, to, 60);
         expect((await read(page)).shots).toBe(before.shots + 1);
       };
 
