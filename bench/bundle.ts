@@ -2,7 +2,7 @@
  * Fulcrum as its users get it: the benchmark adapter and the engine bundled by esbuild, as tsup
  * bundles dist/. The engine keeps its typed-array layouts in enums, which a bundler writes into the
  * code as numbers; tsx compiles file by file and leaves an enum imported from another file as a
- * property load at every use (see src/dynamics/body-store.ts).
+ * property load at every use (see src/store/body-store.ts).
  *
  * esbuild runs as a command, not through its JavaScript API: importing that API into a process
  * under tsx made the engine's steps in it about 20 % slower (pyramid 1.30 -> 1.58 ms).

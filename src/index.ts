@@ -2,9 +2,8 @@
  * `fulcrum`: the engine (worlds, bodies, shapes, joints, events, queries, snapshots).
  * @module fulcrum
  */
-export { FulcrumError } from './core/errors';
-export { stateHash } from './debug/state-hash';
-export { Body, type BodyDef, type BodyType } from './dynamics/body';
+
+export { Body, type BodyDef, type BodyType } from './api/body';
 export type {
   BodyEvent,
   ContactBeginEvent,
@@ -15,7 +14,13 @@ export type {
   WarningEvent,
   WorldEventMap,
   WorldEvents,
-} from './dynamics/events';
+} from './api/events';
+export { type Filter, type RayCastResult, type ShapeDef, ShapeHandle } from './api/shape';
+export { stateHash } from './api/state-hash';
+export { World, type WorldDef } from './api/world';
+export { FulcrumError } from './core/errors';
+export { Shape } from './geometry/shapes';
+export type { Capsule, Circle, Geometry, Polygon, Segment } from './geometry/types';
 export type {
   DistanceJointDef,
   JointDef,
@@ -25,19 +30,15 @@ export type {
   RevoluteJointDef,
   WeldJointDef,
   WheelJointDef,
-} from './dynamics/joints/create-joint';
-export { DistanceJoint } from './dynamics/joints/distance-joint';
-export { Joint, type JointType } from './dynamics/joints/joint';
-export { MotorJoint } from './dynamics/joints/motor-joint';
-export { MouseJoint } from './dynamics/joints/mouse-joint';
-export { PrismaticJoint } from './dynamics/joints/prismatic-joint';
-export { RevoluteJoint } from './dynamics/joints/revolute-joint';
-export { WeldJoint } from './dynamics/joints/weld-joint';
-export { WheelJoint } from './dynamics/joints/wheel-joint';
-export { type Filter, type RayCastResult, type ShapeDef, ShapeHandle } from './dynamics/shape';
-export { World, type WorldDef } from './dynamics/world';
-export { Shape } from './geometry/shapes';
-export type { Capsule, Circle, Geometry, Polygon, Segment } from './geometry/types';
+} from './joints/create-joint';
+export { DistanceJoint } from './joints/distance-joint';
+export { Joint, type JointType } from './joints/joint';
+export { MotorJoint } from './joints/motor-joint';
+export { MouseJoint } from './joints/mouse-joint';
+export { PrismaticJoint } from './joints/prismatic-joint';
+export { RevoluteJoint } from './joints/revolute-joint';
+export { WeldJoint } from './joints/weld-joint';
+export { WheelJoint } from './joints/wheel-joint';
 export type { AABB } from './math/aabb';
 export type { Rot, Transform, Vec2 } from './math/vec2';
 export type { CastHit, QueryFilter, QueryTransform } from './query/index';

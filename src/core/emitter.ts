@@ -1,6 +1,6 @@
 /**
  * A small typed event emitter: `on` returns the function that unsubscribes. The world's events
- * (dynamics/events.ts) and the render layer's runner, renderer and pointer share it.
+ * (api/events.ts) and the render layer's runner, renderer and pointer share it.
  */
 export class Emitter<Events extends object> {
   private readonly handlers = new Map<keyof Events, ((e: never) => void)[]>();

@@ -60,7 +60,7 @@ export function minExtent(g: Geometry): number {
 
 /**
  * Largest distance from the shape's own centroid to any point of it (a circle's radius, a capsule's
- * half length plus radius): its size, which the contact limit compares (see dynamics/contact-limit.ts).
+ * half length plus radius): its size, which the contact limit compares (see world/contact-limit.ts).
  */
 export function centroidExtent(g: Geometry): number {
   switch (g.type) {

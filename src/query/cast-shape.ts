@@ -1,5 +1,5 @@
-import { IntList } from '../collision/int-list';
-import type { World } from '../dynamics/world';
+import type { World } from '../api/world';
+import { IntList } from '../broad-phase/int-list';
 import { computeShapeBounds } from '../geometry/bounds';
 import { makeShapeCastInput, makeShapeCastOutput, shapeCast } from '../geometry/shape-cast';
 import { makeProxy } from '../geometry/shape-proxy';

@@ -1,5 +1,5 @@
 import { checkBoolean, checkKnownKeys, fail } from '../core/errors';
-import { ShapeFlag, type ShapeStore } from '../dynamics/shape-store';
+import { ShapeFlag, type ShapeStore } from '../store/shape-store';
 
 /**
  * Which shapes a world query sees. A shape passes when

@@ -1,5 +1,5 @@
-import type { Body } from '../dynamics/body';
-import type { ShapeHandle } from '../dynamics/shape';
+import type { Body } from '../api/body';
+import type { ShapeHandle } from '../api/shape';
 import type { Vec2 } from '../math/vec2';
 
 /** The answer of `castRay`, `castRayAll` and `castShape`: a fresh object owned by the caller. */

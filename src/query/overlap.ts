@@ -1,7 +1,7 @@
-import { IntList } from '../collision/int-list';
+import type { ShapeHandle } from '../api/shape';
+import type { World } from '../api/world';
+import { IntList } from '../broad-phase/int-list';
 import { checkKnownKeys, FulcrumError, fail } from '../core/errors';
-import type { ShapeHandle } from '../dynamics/shape';
-import type { World } from '../dynamics/world';
 import { computeShapeBounds } from '../geometry/bounds';
 import { type DistanceOutput, makeDistanceOutput, shapeDistance } from '../geometry/distance';
 import { testPoint } from '../geometry/raycast';

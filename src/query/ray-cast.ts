@@ -1,9 +1,9 @@
-import type { BroadPhaseRayCastVisitor } from '../collision/broad-phase';
-import type { World } from '../dynamics/world';
-import type { WorldCore } from '../dynamics/world-core';
+import type { World } from '../api/world';
+import type { BroadPhaseRayCastVisitor } from '../broad-phase/broad-phase';
 import { rayCastGeometry } from '../geometry/raycast';
 import { makeRayHit } from '../geometry/types';
 import { makeTransform } from '../math/vec2';
+import type { WorldCore } from '../world/world-core';
 import { checkPoint } from './args';
 import { makeResolvedQueryFilter, passesQueryFilter, resolveQueryFilter } from './filter';
 import { type CastHit, makeCastHit } from './hit';

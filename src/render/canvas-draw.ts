@@ -1,8 +1,8 @@
-import type { Color, DebugDraw, ShapeStyle } from '../debug/debug-draw';
-import type { Body } from '../dynamics/body';
+import type { Body } from '../api/body';
 import type { Transform, Vec2 } from '../math/vec2';
 import { requireBrowser } from './browser';
 import { cssColor } from './color';
+import type { Color, DebugDraw, ShapeStyle } from './debug-draw';
 
 /** An image drawn at a body's position and angle instead of (or over) its shapes. */
 export interface Sprite {

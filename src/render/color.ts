@@ -1,4 +1,4 @@
-import type { Color } from '../debug/debug-draw';
+import type { Color } from './debug-draw';
 
 const cache = new Map<number, string>();
 

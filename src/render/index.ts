@@ -4,6 +4,9 @@
  */
 
 export { Emitter } from '../core/emitter';
+export { Camera, type CameraView } from './camera';
+export { CanvasDebugDraw, type Sprite } from './canvas-draw';
+export { cssColor, toCss } from './color';
 export {
   type Color,
   colors,
@@ -17,10 +20,7 @@ export {
   mixColor,
   type ShapeStyle,
   scaleColor,
-} from '../debug/debug-draw';
-export { Camera, type CameraView } from './camera';
-export { CanvasDebugDraw, type Sprite } from './canvas-draw';
-export { cssColor, toCss } from './color';
+} from './debug-draw';
 export { Interpolator } from './interpolation';
 export {
   type DragEvent,

@@ -1,5 +1,5 @@
-import type { Body } from '../dynamics/body';
-import type { World } from '../dynamics/world';
+import type { Body } from '../api/body';
+import type { World } from '../api/world';
 import type { Transform } from '../math/vec2';
 
 function grow(a: Float64Array<ArrayBuffer>, n: number): Float64Array<ArrayBuffer> {

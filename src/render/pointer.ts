@@ -1,8 +1,8 @@
+import type { Body } from '../api/body';
+import type { World } from '../api/world';
 import { Emitter } from '../core/emitter';
 import { Limits } from '../core/limits';
-import type { Body } from '../dynamics/body';
-import type { MouseJoint } from '../dynamics/joints/mouse-joint';
-import type { World } from '../dynamics/world';
+import type { MouseJoint } from '../joints/mouse-joint';
 import type { Vec2 } from '../math/vec2';
 import { clientToCanvas, type Render } from './render';
 

@@ -1,18 +1,18 @@
+import type { Body } from '../api/body';
+import type { World } from '../api/world';
 import { Emitter } from '../core/emitter';
 import { FulcrumError } from '../core/errors';
+import type { Vec2 } from '../math/vec2';
+import { requireBrowser } from './browser';
+import { Camera, type CameraView } from './camera';
+import { CanvasDebugDraw, type Sprite } from './canvas-draw';
 import {
   type Color,
   type DebugDrawFlags,
   type DrawWorldOptions,
   defaultDebugDrawFlags,
   drawWorld,
-} from '../debug/debug-draw';
-import type { Body } from '../dynamics/body';
-import type { World } from '../dynamics/world';
-import type { Vec2 } from '../math/vec2';
-import { requireBrowser } from './browser';
-import { Camera, type CameraView } from './camera';
-import { CanvasDebugDraw, type Sprite } from './canvas-draw';
+} from './debug-draw';
 import type { Interpolator } from './interpolation';
 
 /** How one body looks; anything left out keeps the default. */

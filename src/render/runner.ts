@@ -1,5 +1,5 @@
+import type { World } from '../api/world';
 import { Emitter } from '../core/emitter';
-import type { World } from '../dynamics/world';
 import { requireBrowser } from './browser';
 import { Interpolator } from './interpolation';
 import type { Render } from './render';

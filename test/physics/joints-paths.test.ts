@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { createRandom } from '../../scenes/random';
-import { H } from '../../src/dynamics/joints/hinge-batch';
-import { P } from '../../src/dynamics/joints/hinge-paths';
 import { type Body, type Joint, Shape, World } from '../../src/index';
+import { H } from '../../src/solver/hinge-batch';
+import { P } from '../../src/solver/hinge-paths';
 import { momentum } from '../helpers/world';
 
 // Chains and ropes of free hinges (no limit, motor or spring; each body on at most two) are solved

@@ -1,13 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { buildFulcrumWorld } from '../../scenes/build-fulcrum';
 import { tumbler } from '../../scenes/tumbler';
-import { ContactFlag, MC } from '../../src/dynamics/contact-store';
-import { CollideContext } from '../../src/geometry/collide-context';
-import { collidePacked } from '../../src/geometry/manifold';
-import { referenceOwnerOfId } from '../../src/geometry/manifold-polygon';
 import { Pack } from '../../src/geometry/packed';
 import { makeManifold } from '../../src/geometry/types';
 import { Shape, World } from '../../src/index';
+import { CollideContext } from '../../src/narrow-phase/collide-context';
+import { collidePacked } from '../../src/narrow-phase/manifold';
+import { referenceOwnerOfId } from '../../src/narrow-phase/manifold-polygon';
+import { ContactFlag, MC } from '../../src/store/contact-store';
 import { groundWorld, pyramid } from '../helpers/world';
 
 const fresh = makeManifold();

@@ -20,7 +20,7 @@ function crowd(count: number, boxesOnly = false): World {
   return world;
 }
 
-/** The largest count of contacts that count against one shape (see src/dynamics/contact-limit.ts). */
+/** The largest count of contacts that count against one shape (see src/world/contact-limit.ts). */
 function maxLoad(world: World): number {
   const shapes = world.core.shapes;
   let max = 0;

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { drawWorld } from '../../src/debug/debug-draw';
 import { type Body, FulcrumError, Shape, stateHash, World } from '../../src/index';
+import { drawWorld } from '../../src/render/debug-draw';
 
 const DT = 1 / 60;
 

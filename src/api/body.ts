@@ -1,0 +1,418 @@
+import { checkBoolean, FulcrumError, fail } from '../core/errors';
+import {
+  checkAngle,
+  checkCoordinates,
+  checkForce,
+  checkNonNegativeRate,
+  checkRate,
+  checkVector,
+  Limits,
+} from '../core/limits';
+import type { Geometry } from '../geometry/types';
+import type { Joint } from '../joints/joint';
+import { makeRotInto, rotAngle } from '../math/rot';
+import type { Vec2 } from '../math/vec2';
+import { BodyFlag, BodyKind, S } from '../store/body-store';
+import type { ShapeDef, ShapeHandle } from './shape';
+import type { World } from './world';
+
+export type BodyType = 'static' | 'kinematic' | 'dynamic';
+
+export interface BodyDef {
+  type?: BodyType;
+  position?: Vec2;
+  angle?: number;
+  linearVelocity?: Vec2;
+  angularVelocity?: number;
+  linearDamping?: number;
+  angularDamping?: number;
+  gravityScale?: number;
+  fixedRotation?: boolean;
+  bullet?: boolean;
+  allowSleep?: boolean;
+  awake?: boolean;
+  userData?: unknown;
+}
+
+export const BODY_DEF_KEYS = [
+  'type',
+  'position',
+  'angle',
+  'linearVelocity',
+  'angularVelocity',
+  'linearDamping',
+  'angularDamping',
+  'gravityScale',
+  'fixedRotation',
+  'bullet',
+  'allowSleep',
+  'awake',
+  'userData',
+] as const;
+
+export const BODY_TYPES: readonly BodyType[] = ['static', 'kinematic', 'dynamic'];
+
+const rotScratch = { c: 1, s: 0 };
+
+/**
+ * A body handle: a slot and a generation into the world's columns. It stays valid until the body is
+ * destroyed; after that every use throws FulcrumError.
+ */
+export class Body {
+  /** @internal */
+  readonly slot: number;
+  /** @internal */
+  readonly generation: number;
+  readonly world: World;
+  userData: unknown;
+
+  /** @internal created by World.createBody */
+  constructor(world: World, slot: number, generation: number, userData: unknown) {
+    this.world = world;
+    this.slot = slot;
+    this.generation = generation;
+    this.userData = userData;
+  }
+
+  /** @internal */
+  check(): number {
+    const core = this.world.core;
+    if (core.bodies.alive[this.slot] === 0 || core.bodies.generation[this.slot] !== this.generation) {
+      throw new FulcrumError('body has been destroyed');
+    }
+    return this.slot;
+  }
+
+  private unlocked(): number {
+    if (this.world.core.locked) throw new FulcrumError('the world is locked during step()');
+    return this.check();
+  }
+
+  get isValid(): boolean {
+    const core = this.world.core;
+    return core.bodies.alive[this.slot] === 1 && core.bodies.generation[this.slot] === this.generation;
+  }
+
+  get type(): BodyType {
+    return BODY_TYPES[this.world.core.bodies.kind[this.check()]];
+  }
+
+  get position(): Vec2 {
+    const b = this.check();
+    const bodies = this.world.core.bodies;
+    return { x: bodies.px[b], y: bodies.py[b] };
+  }
+
+  get angle(): number {
+    const b = this.check();
+    return rotAngle(this.world.core.bodies.qc[b], this.world.core.bodies.qs[b]);
+  }
+
+  /** rotation as a (cos, sin) pair, exactly as the engine keeps it */
+  get rotation(): { c: number; s: number } {
+    const b = this.check();
+    return { c: this.world.core.bodies.qc[b], s: this.world.core.bodies.qs[b] };
+  }
+
+  get worldCenter(): Vec2 {
+    const b = this.check();
+    return { x: this.world.core.bodies.cx[b], y: this.world.core.bodies.cy[b] };
+  }
+
+  get localCenter(): Vec2 {
+    const b = this.check();
+    return { x: this.world.core.bodies.lcx[b], y: this.world.core.bodies.lcy[b] };
+  }
+
+  get linearVelocity(): Vec2 {
+    const s = this.check() * S.STRIDE;
+    const state = this.world.core.bodies.state;
+    return { x: state[s + S.VX], y: state[s + S.VY] };
+  }
+
+  get angularVelocity(): number {
+    return this.world.core.bodies.state[this.check() * S.STRIDE + S.W];
+  }
+
+  get mass(): number {
+    return this.world.core.bodies.mass[this.check()];
+  }
+
+  /** rotational inertia about the centre of mass */
+  get inertia(): number {
+    return this.world.core.bodies.inertia[this.check()];
+  }
+
+  get isAwake(): boolean {
+    return (this.world.core.bodies.flags[this.check()] & BodyFlag.AWAKE) !== 0;
+  }
+
+  get linearDamping(): number {
+    return this.world.core.bodies.linearDamping[this.check()];
+  }
+
+  get angularDamping(): number {
+    return this.world.core.bodies.angularDamping[this.check()];
+  }
+
+  get gravityScale(): number {
+    return this.world.core.bodies.gravityScale[this.check()];
+  }
+
+  get fixedRotation(): boolean {
+    return (this.world.core.bodies.flags[this.check()] & BodyFlag.FIXED_ROTATION) !== 0;
+  }
+
+  get bullet(): boolean {
+    return (this.world.core.bodies.flags[this.check()] & BodyFlag.BULLET) !== 0;
+  }
+
+  get allowSleep(): boolean {
+    return (this.world.core.bodies.flags[this.check()] & BodyFlag.ALLOW_SLEEP) !== 0;
+  }
+
+  /** joints attached to this body, in creation order */
+  get joints(): Joint[] {
+    return this.world.jointsOf(this.check());
+  }
+
+  /** shapes in creation order */
+  get shapes(): ShapeHandle[] {
+    const b = this.check();
+    return this.world.shapesOf(b);
+  }
+
+  setPosition(position: Vec2): void {
+    const b = this.unlocked();
+    const p = checkCoordinates('position', position);
+    this.world.core.bodies.px[b] = p.x;
+    this.world.core.bodies.py[b] = p.y;
+    this.moved(b);
+  }
+
+  setAngle(angle: number): void {
+    const b = this.unlocked();
+    const a = checkAngle('angle', angle);
+    makeRotInto(a, rotScratch);
+    this.world.core.bodies.qc[b] = rotScratch.c;
+    this.world.core.bodies.qs[b] = rotScratch.s;
+    this.moved(b);
+  }
+
+  setTransform(position: Vec2, angle: number): void {
+    const b = this.unlocked();
+    const p = checkCoordinates('position', position);
+    const a = checkAngle('angle', angle);
+    const bodies = this.world.core.bodies;
+    makeRotInto(a, rotScratch);
+    bodies.px[b] = p.x;
+    bodies.py[b] = p.y;
+    bodies.qc[b] = rotScratch.c;
+    bodies.qs[b] = rotScratch.s;
+    this.moved(b);
+  }
+
+  private moved(b: number): void {
+    const core = this.world.core;
+    core.poseEpoch++;
+    core.bodies.updateCenter(b);
+    core.syncBodyProxies(b);
+    core.wake(b);
+  }
+
+  setLinearVelocity(velocity: Vec2): void {
+    const b = this.unlocked();
+    const v = checkVector('velocity', velocity, Limits.RATE);
+    const core = this.world.core;
+    if (core.bodies.kind[b] === BodyKind.STATIC) return;
+    const s = b * S.STRIDE;
+    core.bodies.state[s + S.VX] = v.x;
+    core.bodies.state[s + S.VY] = v.y;
+    this.wakeWithNeighbours(b);
+  }
+
+  setAngularVelocity(omega: number): void {
+    const b = this.unlocked();
+    const w = checkRate('angularVelocity', omega);
+    const core = this.world.core;
+    if (core.bodies.kind[b] === BodyKind.STATIC) return;
+    if ((core.bodies.flags[b] & BodyFlag.FIXED_ROTATION) !== 0 && core.bodies.kind[b] === BodyKind.DYNAMIC)
+      return;
+    core.bodies.state[b * S.STRIDE + S.W] = w;
+    this.wakeWithNeighbours(b);
+  }
+
+  /** A kinematic body that starts moving wakes what rests on it. */
+  private wakeWithNeighbours(b: number): void {
+    const core = this.world.core;
+    core.wake(b);
+    if (core.bodies.kind[b] === BodyKind.KINEMATIC) core.wakeTouching(b);
+  }
+
+  setLinearDamping(damping: number): void {
+    const b = this.unlocked();
+    this.world.core.bodies.linearDamping[b] = checkNonNegativeRate('linearDamping', damping);
+  }
+
+  setAngularDamping(damping: number): void {
+    const b = this.unlocked();
+    this.world.core.bodies.angularDamping[b] = checkNonNegativeRate('angularDamping', damping);
+  }
+
+  setGravityScale(scale: number): void {
+    const b = this.unlocked();
+    this.world.core.bodies.gravityScale[b] = checkRate('gravityScale', scale);
+    this.world.core.wake(b);
+  }
+
+  setFixedRotation(fixed: boolean): void {
+    const b = this.unlocked();
+    checkBoolean('fixedRotation', fixed);
+    const core = this.world.core;
+    if (fixed) core.bodies.flags[b] |= BodyFlag.FIXED_ROTATION;
+    else core.bodies.flags[b] &= ~BodyFlag.FIXED_ROTATION;
+    if (fixed) core.bodies.state[b * S.STRIDE + S.W] = 0;
+    core.updateMass(b);
+    core.wake(b);
+  }
+
+  setBullet(bullet: boolean): void {
+    const b = this.unlocked();
+    checkBoolean('bullet', bullet);
+    if (bullet) this.world.core.bodies.flags[b] |= BodyFlag.BULLET;
+    else this.world.core.bodies.flags[b] &= ~BodyFlag.BULLET;
+  }
+
+  setAllowSleep(allow: boolean): void {
+    const b = this.unlocked();
+    checkBoolean('allowSleep', allow);
+    const core = this.world.core;
+    if (allow) core.bodies.flags[b] |= BodyFlag.ALLOW_SLEEP;
+    else {
+      core.bodies.flags[b] &= ~BodyFlag.ALLOW_SLEEP;
+      core.wake(b);
+    }
+  }
+
+  setType(type: BodyType): void {
+    const b = this.unlocked();
+    if (!BODY_TYPES.includes(type)) fail('type', type, "'static', 'kinematic' or 'dynamic'");
+    this.world.changeBodyType(b, type);
+  }
+
+  /** Wakes the body, or puts it and everything it touches to sleep. */
+  setAwake(awake: boolean): void {
+    const b = this.unlocked();
+    checkBoolean('awake', awake);
+    if (awake) this.world.core.wake(b);
+    else this.world.sleepBody(b);
+  }
+
+  /** Force in newtons at a world point (default: the centre of mass), until the end of the next step. */
+  applyForce(force: Vec2, point?: Vec2): void {
+    const b = this.unlocked();
+    const f = checkVector('force', force, Limits.FORCE);
+    const core = this.world.core;
+    const bodies = core.bodies;
+    const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkCoordinates('point', point);
+    if (bodies.kind[b] !== BodyKind.DYNAMIC) return;
+    bodies.fx[b] += f.x;
+    bodies.fy[b] += f.y;
+    bodies.torque[b] += (p.x - bodies.cx[b]) * f.y - (p.y - bodies.cy[b]) * f.x;
+    core.wake(b);
+  }
+
+  applyTorque(torque: number): void {
+    const b = this.unlocked();
+    const t = checkForce('torque', torque);
+    const core = this.world.core;
+    if (core.bodies.kind[b] !== BodyKind.DYNAMIC) return;
+    core.bodies.torque[b] += t;
+    core.wake(b);
+  }
+
+  /** Impulse in N·s at a world point (default: the centre of mass): changes the velocity at once. */
+  applyLinearImpulse(impulse: Vec2, point?: Vec2): void {
+    const b = this.unlocked();
+    const i = checkVector('impulse', impulse, Limits.FORCE);
+    const core = this.world.core;
+    const bodies = core.bodies;
+    const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkCoordinates('point', point);
+    if (bodies.kind[b] !== BodyKind.DYNAMIC) return;
+    const s = b * S.STRIDE;
+    bodies.state[s + S.VX] += bodies.invMass[b] * i.x;
+    bodies.state[s + S.VY] += bodies.invMass[b] * i.y;
+    bodies.state[s + S.W] += bodies.invInertia[b] * ((p.x - bodies.cx[b]) * i.y - (p.y - bodies.cy[b]) * i.x);
+    core.wake(b);
+  }
+
+  applyAngularImpulse(impulse: number): void {
+    const b = this.unlocked();
+    const i = checkForce('impulse', impulse);
+    const core = this.world.core;
+    if (core.bodies.kind[b] !== BodyKind.DYNAMIC) return;
+    core.bodies.state[b * S.STRIDE + S.W] += core.bodies.invInertia[b] * i;
+    core.wake(b);
+  }
+
+  getWorldPoint(localPoint: Vec2): Vec2 {
+    const b = this.check();
+    const p = checkCoordinates('localPoint', localPoint);
+    const bodies = this.world.core.bodies;
+    const c = bodies.qc[b];
+    const s = bodies.qs[b];
+    return { x: c * p.x - s * p.y + bodies.px[b], y: s * p.x + c * p.y + bodies.py[b] };
+  }
+
+  getLocalPoint(worldPoint: Vec2): Vec2 {
+    const b = this.check();
+    const p = checkCoordinates('worldPoint', worldPoint);
+    const bodies = this.world.core.bodies;
+    const c = bodies.qc[b];
+    const s = bodies.qs[b];
+    const dx = p.x - bodies.px[b];
+    const dy = p.y - bodies.py[b];
+    return { x: c * dx + s * dy, y: -s * dx + c * dy };
+  }
+
+  getWorldVector(localVector: Vec2): Vec2 {
+    const b = this.check();
+    const v = checkCoordinates('localVector', localVector);
+    const bodies = this.world.core.bodies;
+    const c = bodies.qc[b];
+    const s = bodies.qs[b];
+    return { x: c * v.x - s * v.y, y: s * v.x + c * v.y };
+  }
+
+  getLocalVector(worldVector: Vec2): Vec2 {
+    const b = this.check();
+    const v = checkCoordinates('worldVector', worldVector);
+    const bodies = this.world.core.bodies;
+    const c = bodies.qc[b];
+    const s = bodies.qs[b];
+    return { x: c * v.x + s * v.y, y: -s * v.x + c * v.y };
+  }
+
+  /** Velocity of a world point attached to the body. */
+  getLinearVelocityAt(worldPoint: Vec2): Vec2 {
+    const b = this.check();
+    const p = checkCoordinates('worldPoint', worldPoint);
+    const bodies = this.world.core.bodies;
+    const s = b * S.STRIDE;
+    const w = bodies.state[s + S.W];
+    return {
+      x: bodies.state[s + S.VX] - w * (p.y - bodies.cy[b]),
+      y: bodies.state[s + S.VY] + w * (p.x - bodies.cx[b]),
+    };
+  }
+
+  createShape(geometry: Geometry, def?: ShapeDef): ShapeHandle {
+    this.unlocked();
+    return this.world.createShapeOn(this, geometry, def);
+  }
+
+  destroyShape(shape: ShapeHandle): void {
+    this.unlocked();
+    this.world.destroyShapeOf(this, shape);
+  }
+}

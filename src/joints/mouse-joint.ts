@@ -1,0 +1,135 @@
+import type { Body } from '../api/body';
+import type { World } from '../api/world';
+import { checkCoordinates } from '../core/limits';
+import type { Vec2 } from '../math/vec2';
+import type { JointContext } from '../solver/joint-context';
+import { solve22, solved } from '../solver/joint-math';
+import { makeSoftness, type Softness } from '../solver/softness';
+import { S } from '../store/body-store';
+import { Joint } from './joint';
+
+/** @internal */
+export interface MouseOptions {
+  targetX: number;
+  targetY: number;
+  maxForce: number;
+  hertz: number;
+  dampingRatio: number;
+}
+
+/**
+ * Pulls a point of one body towards a target with a soft spring (hertz, damping ratio) whose force is
+ * capped at maxForce: dragging with the mouse or a finger. It acts on one body, which is both bodyA
+ * and bodyB of the joint.
+ */
+export class MouseJoint extends Joint {
+  readonly type = 'mouse' as const;
+  /** @internal */
+  o: MouseOptions;
+  private impulseX = 0;
+  private impulseY = 0;
+  private readonly soft: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+  private cBx = 0;
+  private cBy = 0;
+
+  /** @internal */
+  constructor(world: World, body: Body, localAnchor: Vec2, userData: unknown, options: MouseOptions) {
+    super(world, body, body, localAnchor, localAnchor, true, userData);
+    this.o = options;
+  }
+
+  get body(): Body {
+    return this.bodyB;
+  }
+
+  get target(): Vec2 {
+    return { x: this.o.targetX, y: this.o.targetY };
+  }
+
+  /** Moves the target (world point) and wakes the body. */
+  setTarget(target: Vec2): void {
+    this.check();
+    const t = checkCoordinates('target', target);
+    this.o.targetX = t.x;
+    this.o.targetY = t.y;
+    this.world.core.wake(this.bodyB.slot);
+  }
+
+  getReactionForce(): Vec2 {
+    this.check();
+    return { x: this.impulseX * this.invH, y: this.impulseY * this.invH };
+  }
+
+  getReactionTorque(): number {
+    this.check();
+    return 0;
+  }
+
+  /** @internal */
+  prepare(ctx: JointContext): void {
+    this.prepareBase(ctx);
+    this.cBx = ctx.cx[this.b];
+    this.cBy = ctx.cy[this.b];
+    makeSoftness(this.o.hertz, this.o.dampingRatio, ctx.h, this.soft);
+  }
+
+  /** @internal */
+  forgetImpulses(): void {
+    this.impulseX = 0;
+    this.impulseY = 0;
+  }
+
+  /** @internal */
+  warmStart(ctx: JointContext): void {
+    const state = ctx.state;
+    this.updateAnchors(state);
+    const sb = this.b * S.STRIDE;
+    state[sb + S.VX] += this.mB * this.impulseX;
+    state[sb + S.VY] += this.mB * this.impulseY;
+    state[sb + S.W] += this.iB * (this.rBx * this.impulseY - this.rBy * this.impulseX);
+  }
+
+  /** @internal */
+  solve(ctx: JointContext, _useBias: boolean): void {
+    const state = ctx.state;
+    this.updateAnchors(state);
+    const sb = this.b * S.STRIDE;
+    const mB = this.mB;
+    const iB = this.iB;
+    const rBx = this.rBx;
+    const rBy = this.rBy;
+    let vx = state[sb + S.VX];
+    let vy = state[sb + S.VY];
+    let w = state[sb + S.W];
+    // the spring acts in both passes: it is a soft force, not an error to be relaxed away
+    const cx = this.cBx + state[sb + S.DPX] + rBx - this.o.targetX;
+    const cy = this.cBy + state[sb + S.DPY] + rBy - this.o.targetY;
+    const cdotX = vx - w * rBy;
+    const cdotY = vy + w * rBx;
+    const k11 = mB + rBy * rBy * iB;
+    const k12 = -rBy * rBx * iB;
+    const k22 = mB + rBx * rBx * iB;
+    solve22(k11, k12, k22, cdotX + this.soft.biasRate * cx, cdotY + this.soft.biasRate * cy);
+    const oldX = this.impulseX;
+    const oldY = this.impulseY;
+    let ix = oldX - this.soft.massScale * solved.x - this.soft.impulseScale * oldX;
+    let iy = oldY - this.soft.massScale * solved.y - this.soft.impulseScale * oldY;
+    const max = this.o.maxForce * ctx.h;
+    const len2 = ix * ix + iy * iy;
+    if (len2 > max * max) {
+      const scale = max / Math.sqrt(len2);
+      ix *= scale;
+      iy *= scale;
+    }
+    this.impulseX = ix;
+    this.impulseY = iy;
+    const px = ix - oldX;
+    const py = iy - oldY;
+    vx += mB * px;
+    vy += mB * py;
+    w += iB * (rBx * py - rBy * px);
+    state[sb + S.VX] = vx;
+    state[sb + S.VY] = vy;
+    state[sb + S.W] = w;
+  }
+}

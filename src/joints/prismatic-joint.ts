@@ -1,0 +1,185 @@
+import type { Body } from '../api/body';
+import type { World } from '../api/world';
+import { checkBoolean } from '../core/errors';
+import { checkNonNegativeForce, checkRate } from '../core/limits';
+import type { Vec2 } from '../math/vec2';
+import { motorImpulse } from '../solver/axial-rows';
+import type { JointContext } from '../solver/joint-context';
+import { relativeAngle, unwindAngle } from '../solver/joint-math';
+import { S } from '../store/body-store';
+import { SliderJoint, type SliderOptions } from './slider-joint';
+
+/** @internal */
+export interface PrismaticOptions {
+  referenceAngle: number;
+  enableMotor: boolean;
+  motorSpeed: number;
+  maxMotorForce: number;
+}
+
+/** A slider: B moves along an axis fixed in A without turning relative to A; limits, motor, spring. */
+export class PrismaticJoint extends SliderJoint {
+  readonly type = 'prismatic' as const;
+  /** @internal */
+  o: PrismaticOptions;
+  private angularImpulse = 0;
+  private angle0 = 0;
+
+  /** @internal */
+  constructor(
+    world: World,
+    bodyA: Body,
+    bodyB: Body,
+    localAnchorA: Vec2,
+    localAnchorB: Vec2,
+    collideConnected: boolean,
+    userData: unknown,
+    slider: SliderOptions,
+    options: PrismaticOptions,
+  ) {
+    super(world, bodyA, bodyB, localAnchorA, localAnchorB, collideConnected, userData, slider);
+    this.o = options;
+  }
+
+  enableMotor(enable: boolean): void {
+    checkBoolean('enable', enable);
+    this.changing();
+    this.o.enableMotor = enable;
+  }
+
+  setMotorSpeed(speed: number): void {
+    checkRate('speed', speed);
+    this.changing();
+    this.o.motorSpeed = speed;
+  }
+
+  setMaxMotorForce(force: number): void {
+    checkNonNegativeForce('force', force);
+    this.changing();
+    this.o.maxMotorForce = force;
+  }
+
+  getReactionForce(): Vec2 {
+    this.check();
+    return this.sliderForce();
+  }
+
+  getReactionTorque(): number {
+    this.check();
+    return this.angularImpulse * this.invH;
+  }
+
+  /** @internal */
+  protected hasMotor(): boolean {
+    return this.o.enableMotor;
+  }
+
+  /** @internal motor, spring and limits push along the axis: one axial row (limits: see Joint) */
+  override axialRows(): number {
+    return this.o.enableMotor || this.s.enableSpring || this.s.enableLimit ? 1 : 0;
+  }
+
+  /** @internal */
+  protected axisEntry(): number {
+    return this.axialEntry0;
+  }
+
+  /** @internal */
+  protected override axisMotor(ctx: JointContext, speed: number, mass: number): number {
+    const o = this.o;
+    if (!o.enableMotor) return 0;
+    const old = this.axialImpulse;
+    this.axialImpulse = motorImpulse(old, speed, o.motorSpeed, mass, o.maxMotorForce * ctx.h);
+    return this.axialImpulse - old;
+  }
+
+  /** @internal the axis rows (see Joint.solveAxial) */
+  override solveAxial(
+    ctx: JointContext,
+    _row: number,
+    speed: number,
+    mass: number,
+    useBias: boolean,
+  ): number {
+    return this.solveAxisRows(ctx, speed, mass, useBias);
+  }
+
+  /** @internal the perpendicular and angular rows */
+  override treeRows(): number {
+    return 2;
+  }
+
+  /** @internal */
+  override treeFill(
+    ctx: JointContext,
+    jA: Float64Array,
+    jB: Float64Array,
+    err: Float64Array,
+    j: number,
+    limits: boolean,
+  ): number {
+    this.updateAxis(ctx.state);
+    this.fillPerpRow(jA, jB, err, j, 0);
+    this.fillAngleRow(ctx.state, jA, jB, err, j, 1, this.angle0);
+    return this.fillAxisLimitRow(ctx, jA, jB, err, j, 2, limits);
+  }
+
+  /** @internal */
+  override treeAddImpulse(solution: Float64Array, o: number, keep: number): void {
+    this.perpImpulse = keep * this.perpImpulse - solution[o];
+    this.angularImpulse = keep * this.angularImpulse - solution[o + 1];
+    this.addLimitImpulse(solution, o + 2, keep);
+  }
+
+  /** @internal */
+  prepare(ctx: JointContext): void {
+    this.prepareSlider(ctx);
+    this.angle0 = unwindAngle(
+      relativeAngle(ctx.qc[this.a], ctx.qs[this.a], ctx.qc[this.b], ctx.qs[this.b]) - this.o.referenceAngle,
+    );
+    if (!this.o.enableMotor) this.axialImpulse = 0;
+  }
+
+  /** @internal */
+  forgetImpulses(): void {
+    this.forgetSliderImpulses();
+    this.angularImpulse = 0;
+  }
+
+  /** @internal */
+  warmStart(ctx: JointContext): void {
+    const state = ctx.state;
+    this.warmStartSlider(state);
+    state[this.a * S.STRIDE + S.W] -= this.iA * this.angularImpulse;
+    state[this.b * S.STRIDE + S.W] += this.iB * this.angularImpulse;
+  }
+
+  /** @internal */
+  solve(ctx: JointContext, useBias: boolean): void {
+    const state = ctx.state;
+    this.solveSlider(ctx, useBias);
+    // no rotation relative to A
+    const k = this.iA + this.iB;
+    if (k > 0 && !this.inTree) {
+      const sa = this.a * S.STRIDE;
+      const sb = this.b * S.STRIDE;
+      let bias = 0;
+      let massScale = 1;
+      let impulseScale = 0;
+      if (useBias) {
+        const C =
+          this.angle0 +
+          relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
+        const soft = ctx.jointSoftness;
+        bias = Math.max(-ctx.jointPushMaxTurn, Math.min(soft.biasRate * C, ctx.jointPushMaxTurn));
+        massScale = soft.massScale;
+        impulseScale = soft.impulseScale;
+      }
+      const impulse =
+        (-massScale * (state[sb + S.W] - state[sa + S.W] + bias)) / k - impulseScale * this.angularImpulse;
+      this.angularImpulse += impulse;
+      state[sa + S.W] -= this.iA * impulse;
+      state[sb + S.W] += this.iB * impulse;
+    }
+  }
+}

@@ -1,0 +1,339 @@
+import { growF64, growI32 } from '../core/grow';
+import { IndexBound } from '../core/index-bound';
+import type { Joint } from '../joints/joint';
+import { S } from '../store/body-store';
+import { Anchor, H, turnStepData, writeStepData } from './hinge-batch';
+import type { JointContext } from './joint-context';
+
+/**
+ * Layout of one hinge of a path in `HingePaths.data` (doubles): the hinge batch's step data (H.MA ..
+ * H.DCY, and H.RAX .. H.RBY for the current anchors), with the body before the hinge on the path as
+ * A and the one after it as B, then the factorization's and the projection's numbers.
+ */
+export enum P {
+  /**
+   * separation of the anchors (after minus before) at the last factorization; the first field after
+   * H's, written as a number: a bundler compiling file by file cannot read H.STRIDE
+   */
+  EX = 19,
+  EY,
+  /** L = B D⁻¹ of the previous hinge (B: its coupling to this one), 2 × 2, row-major */
+  L11,
+  L12,
+  L21,
+  L22,
+  /** D⁻¹, the inverse of this hinge's pivot, symmetric */
+  E11,
+  E12,
+  E22,
+  /** the forward substitution's value */
+  YX,
+  YY,
+  /** 1 when the hinge before on the path shares this one's body A, 0 at the start of a path */
+  LINK,
+  STRIDE,
+}
+
+/*
+ * Direct solver for the point rows of hinges that form paths: chains and ropes of revolute joints, each
+ * body on at most two of them. Ordered along a path, hinge k couples only to k - 1 and k + 1 (through
+ * the body they share), so the rows' effective mass A = J M⁻¹ Jᵀ is block tridiagonal with 2 × 2
+ * blocks, and A = L D Lᵀ takes one pass down the path, and a solve a pass each way:
+ *
+ *     D_0 = A_00,   L_k = A_k,k-1 D_k-1⁻¹,   D_k = A_kk - L_k A_k,k-1ᵀ
+ *
+ * The body-and-joint tree of JointTree gives the same exact projection for any tree; along a path
+ * this takes about a third of its arithmetic, and reads the bodies and anchors in one loop, without
+ * the joints' calls.
+ *
+ * A is positive definite (each hinge of a path brings a body of its own), so no pivoting is needed.
+ * Non-dynamic bodies at a path's end have zero inverse mass and add nothing; their velocity still
+ * enters J v, so a kinematic end drives the path.
+ */
+/** @internal */
+export class HingePaths {
+  /** the hinges, path after path, each path from one end to the other */
+  readonly joints: Joint[] = [];
+  count = 0;
+  /** the fastest the hinges' position correction may pull (see JointTree's pushLimit) */
+  pushLimit = 0;
+  private data = new Float64Array(0);
+  /** per hinge: the slots of the bodies before and after it on the path */
+  private ids = new Int32Array(0);
+  /** per hinge: its anchors (Anchor layout), with the body before it as A and the one after as B */
+  private anchors = new Float64Array(0);
+  /** whether the paths were laid anew since the last prepare (their masses must be read) */
+  private laid = false;
+  /** per hinge: 1 when the joint's body A comes before it on its path, -1 when B does */
+  private orientation = new Float64Array(0);
+  /**
+   * Whether the step's last factorization carried the step data over to the next step (see factor),
+   * and the world's pose epoch when that step began (JointContext.poseEpoch): while it holds, the
+   * next step starts from it, without turnStepData and without its first factorization.
+   */
+  private carried = false;
+  private stepPoseEpoch = -1;
+  /** set by prepare: the first factorization of this step is the last one of the step before */
+  private startFactored = false;
+  /** the hinges before the last clear, and whether add() laid them again in the same places */
+  private readonly previous: Joint[] = [];
+  private sameLayout = false;
+
+  /** Empties the list (before a build adds the paths anew). */
+  clear(): void {
+    this.previous.length = 0;
+    for (const joint of this.joints) this.previous.push(joint);
+    this.sameLayout = true;
+    this.joints.length = 0;
+    this.count = 0;
+  }
+
+  /**
+   * Appends `joint` to the current path, or starts a new path with it (`startsPath`); `forward` when
+   * its body A is the one before it on the path.
+   */
+  add(joint: Joint, startsPath: boolean, forward: boolean): void {
+    const k = this.count;
+    if (this.ids.length < 2 * (k + 1)) {
+      const cap = Math.max(16, 2 * (k + 1));
+      this.data = growF64(this.data, cap * P.STRIDE);
+      this.ids = growI32(this.ids, 2 * cap);
+      this.anchors = growF64(this.anchors, Anchor.STRIDE * cap);
+      this.orientation = growF64(this.orientation, cap);
+    }
+    const sense = forward ? 1 : -1;
+    const link = startsPath ? 0 : 1;
+    if (
+      this.previous[k] !== joint ||
+      this.orientation[k] !== sense ||
+      this.data[k * P.STRIDE + P.LINK] !== link
+    ) {
+      this.sameLayout = false;
+    }
+    const a = joint.bodyA.slot;
+    const b = joint.bodyB.slot;
+    this.ids[2 * k] = forward ? a : b;
+    this.ids[2 * k + 1] = forward ? b : a;
+    const o = k * Anchor.STRIDE;
+    this.anchors[o + Anchor.AX] = forward ? joint.localAnchorAx : joint.localAnchorBx;
+    this.anchors[o + Anchor.AY] = forward ? joint.localAnchorAy : joint.localAnchorBy;
+    this.anchors[o + Anchor.BX] = forward ? joint.localAnchorBx : joint.localAnchorAx;
+    this.anchors[o + Anchor.BY] = forward ? joint.localAnchorBy : joint.localAnchorAy;
+    this.laid = true;
+    this.orientation[k] = sense;
+    this.data[k * P.STRIDE + P.LINK] = link;
+    // a hinge here is not prepared (HingePaths reads its step data itself): impulses of rows it had
+    // before (limit, motor, spring) must not linger in its reaction torque
+    joint.onPath = true;
+    joint.forgetImpulses();
+    this.joints.push(joint);
+    this.count = k + 1;
+  }
+
+  /**
+   * Reads the step's masses and anchors (once a step, before the first factorization), unless the
+   * last step carried them over and no pose or mass was set since (paths laid again the same way
+   * keep their records).
+   */
+  prepare(ctx: JointContext): void {
+    if (this.count === 0) return;
+    const carry =
+      this.carried &&
+      this.stepPoseEpoch === ctx.poseEpoch &&
+      (!this.laid || (this.sameLayout && this.count === this.previous.length));
+    // the masses and centres change only with a body's mass, which lays the paths anew
+    if (!carry) {
+      if (this.laid) writeStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+      else turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+    }
+    this.startFactored = carry;
+    this.carried = false;
+    this.stepPoseEpoch = ctx.poseEpoch;
+    this.laid = false;
+  }
+
+  /** Whether the step's first factorization is the last one of the step before (see prepare). */
+  get factoredAtStart(): boolean {
+    return this.startFactored;
+  }
+
+  /**
+   * Turns the anchors with the bodies, measures the separations and factors A at the current
+   * positions. The step's `last` factorization also carries the step data over to the next step (as
+   * HingeBatch.relax does): its turned anchors and centres' offset are the next step's, and so is
+   * the factorization itself.
+   */
+  factor(state: Float64Array, last: boolean): void {
+    const d = this.data;
+    const ids = this.ids;
+    // the previous hinge's anchor on the body after it, and its D⁻¹ (times 0 at a path's start)
+    let qx = 0;
+    let qy = 0;
+    let e11 = 0;
+    let e12 = 0;
+    let e22 = 0;
+    for (let k = 0, n = this.count & IndexBound.MAX; k < n; k++) {
+      const base = k * P.STRIDE;
+      const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
+      const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
+      // every field read once and before the stores (see HingeBatch.relax)
+      const mA = d[base + H.MA];
+      const iA = d[base + H.IA];
+      const mB = d[base + H.MB];
+      const iB = d[base + H.IB];
+      const link = d[base + P.LINK];
+      const dcx = d[base + H.DCX];
+      const dcy = d[base + H.DCY];
+      const rAx0 = d[base + H.RAX0];
+      const rAy0 = d[base + H.RAY0];
+      const rBx0 = d[base + H.RBX0];
+      const rBy0 = d[base + H.RBY0];
+      let c = state[sa + S.DQC];
+      let s = state[sa + S.DQS];
+      const rAx = c * rAx0 - s * rAy0;
+      const rAy = s * rAx0 + c * rAy0;
+      c = state[sb + S.DQC];
+      s = state[sb + S.DQS];
+      const rBx = c * rBx0 - s * rBy0;
+      const rBy = s * rBx0 + c * rBy0;
+      d[base + H.RAX] = rAx;
+      d[base + H.RAY] = rAy;
+      d[base + H.RBX] = rBx;
+      d[base + H.RBY] = rBy;
+      const dpx = state[sb + S.DPX] - state[sa + S.DPX];
+      const dpy = state[sb + S.DPY] - state[sa + S.DPY];
+      d[base + P.EX] = dpx + dcx + rBx - rAx;
+      d[base + P.EY] = dpy + dcy + rBy - rAy;
+      if (last) {
+        d[base + H.RAX0] = rAx;
+        d[base + H.RAY0] = rAy;
+        d[base + H.RBX0] = rBx;
+        d[base + H.RBY0] = rBy;
+        d[base + H.DCX] = dcx + dpx;
+        d[base + H.DCY] = dcy + dpy;
+      }
+      // the coupling to the previous hinge through body A (B of that one): the velocity of this
+      // hinge's rows per unit impulse on the previous one's, -(m 1 + i r⊥ q⊥ᵀ)
+      const b11 = -link * (mA + iA * rAy * qy);
+      const b12 = link * iA * rAy * qx;
+      const b21 = link * iA * rAx * qy;
+      const b22 = -link * (mA + iA * rAx * qx);
+      const l11 = b11 * e11 + b12 * e12;
+      const l12 = b11 * e12 + b12 * e22;
+      const l21 = b21 * e11 + b22 * e12;
+      const l22 = b21 * e12 + b22 * e22;
+      d[base + P.L11] = l11;
+      d[base + P.L12] = l12;
+      d[base + P.L21] = l21;
+      d[base + P.L22] = l22;
+      // the pivot: this hinge's own effective mass less what the previous hinges take of it
+      const d11 = mA + mB + iA * rAy * rAy + iB * rBy * rBy - (l11 * b11 + l12 * b12);
+      const d12 = -iA * rAx * rAy - iB * rBx * rBy - (l11 * b21 + l12 * b22);
+      const d22 = mA + mB + iA * rAx * rAx + iB * rBx * rBx - (l21 * b21 + l22 * b22);
+      let det = d11 * d22 - d12 * d12;
+      if (det !== 0) det = 1 / det;
+      e11 = det * d22;
+      e12 = -det * d12;
+      e22 = det * d11;
+      d[base + P.E11] = e11;
+      d[base + P.E12] = e12;
+      d[base + P.E22] = e22;
+      qx = rBx;
+      qy = rBy;
+    }
+    if (last) this.carried = true;
+  }
+
+  /**
+   * Projects the velocities onto the hinges' rows, J v = -biasRate C, with the last factorization
+   * (see JointTree.project; `first` as there).
+   */
+  project(state: Float64Array, biasRate: number, first: boolean): void {
+    const d = this.data;
+    const limit = this.pushLimit;
+    const ids = this.ids;
+    const n = this.count & IndexBound.MAX;
+    // forward: y_k = -(J v + bias)_k - L_k y_k-1
+    let yx = 0;
+    let yy = 0;
+    for (let k = 0; k < n; k++) {
+      const base = k * P.STRIDE;
+      const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
+      const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
+      const wA = state[sa + S.W];
+      const wB = state[sb + S.W];
+      const rx =
+        state[sa + S.VX] -
+        wA * d[base + H.RAY] -
+        state[sb + S.VX] +
+        wB * d[base + H.RBY] -
+        Math.max(-limit, Math.min(biasRate * d[base + P.EX], limit));
+      const ry =
+        state[sa + S.VY] +
+        wA * d[base + H.RAX] -
+        state[sb + S.VY] -
+        wB * d[base + H.RBX] -
+        Math.max(-limit, Math.min(biasRate * d[base + P.EY], limit));
+      const nx = rx - (d[base + P.L11] * yx + d[base + P.L12] * yy);
+      yy = ry - (d[base + P.L21] * yx + d[base + P.L22] * yy);
+      yx = nx;
+      d[base + P.YX] = yx;
+      d[base + P.YY] = yy;
+    }
+    // backward: λ_k = D_k⁻¹ y_k - L_k+1ᵀ λ_k+1, applied to the bodies as it is found
+    let px = 0;
+    let py = 0;
+    let l11 = 0;
+    let l12 = 0;
+    let l21 = 0;
+    let l22 = 0;
+    const keep = first ? 0 : 1;
+    for (let k = n - 1; k >= 0; k--) {
+      const base = k * P.STRIDE;
+      const y1 = d[base + P.YX];
+      const y2 = d[base + P.YY];
+      const e12 = d[base + P.E12];
+      const nx = d[base + P.E11] * y1 + e12 * y2 - (l11 * px + l21 * py);
+      const ny = e12 * y1 + d[base + P.E22] * y2 - (l12 * px + l22 * py);
+      px = nx;
+      py = ny;
+      l11 = d[base + P.L11];
+      l12 = d[base + P.L12];
+      l21 = d[base + P.L21];
+      l22 = d[base + P.L22];
+      const mA = d[base + H.MA];
+      const iA = d[base + H.IA];
+      const mB = d[base + H.MB];
+      const iB = d[base + H.IB];
+      const rAx = d[base + H.RAX];
+      const rAy = d[base + H.RAY];
+      const rBx = d[base + H.RBX];
+      const rBy = d[base + H.RBY];
+      d[base + H.LX] = keep * d[base + H.LX] + px;
+      d[base + H.LY] = keep * d[base + H.LY] + py;
+      const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
+      const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
+      state[sa + S.VX] -= mA * px;
+      state[sa + S.VY] -= mA * py;
+      state[sa + S.W] -= iA * (rAx * py - rAy * px);
+      state[sb + S.VX] += mB * px;
+      state[sb + S.VY] += mB * py;
+      state[sb + S.W] += iB * (rBx * py - rBy * px);
+    }
+  }
+
+  /**
+   * Hands each hinge its impulse of the step (reaction force), turned to the joint's own sense in
+   * place: the next step's first projection sets it anew.
+   */
+  store(ctx: JointContext): void {
+    const d = this.data;
+    for (let k = 0; k < this.count; k++) {
+      const base = k * P.STRIDE;
+      const sense = this.orientation[k];
+      d[base + H.LX] *= sense;
+      d[base + H.LY] *= sense;
+      this.joints[k].unpackHinge(d, base, ctx.invH);
+    }
+  }
+}
