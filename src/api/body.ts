@@ -13,7 +13,10 @@ import type { Joint } from '../joints/joint';
 import { makeRotInto, rotAngle } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
 import { BodyFlag, BodyKind, S } from '../store/body-store';
-import type { ShapeDef, ShapeHandle } from './shape';
+import type { WorldCore } from '../world/world-core';
+import { changeBodyKind, sleepIsland } from '../world/world-edits';
+import type { WorldHandles } from './handles';
+import { attachShape, detachShape, type ShapeDef, type ShapeHandle } from './shape';
 import type { World } from './world';
 
 export type BodyType = 'static' | 'kinematic' | 'dynamic';
@@ -51,6 +54,11 @@ export const BODY_DEF_KEYS = [
 ] as const;
 
 export const BODY_TYPES: readonly BodyType[] = ['static', 'kinematic', 'dynamic'];
+export const BODY_KINDS = {
+  static: BodyKind.STATIC,
+  kinematic: BodyKind.KINEMATIC,
+  dynamic: BodyKind.DYNAMIC,
+} as const;
 
 const rotScratch = { c: 1, s: 0 };
 
@@ -65,10 +73,16 @@ export class Body {
   readonly generation: number;
   readonly world: World;
   userData: unknown;
+  /** @internal the engine state of the body's world */
+  readonly core: WorldCore;
+  /** @internal the handles of the world's bodies and shapes */
+  readonly handles: WorldHandles;
 
   /** @internal created by World.createBody */
-  constructor(world: World, slot: number, generation: number, userData: unknown) {
+  constructor(world: World, handles: WorldHandles, slot: number, generation: number, userData: unknown) {
     this.world = world;
+    this.handles = handles;
+    this.core = handles.core;
     this.slot = slot;
     this.generation = generation;
     this.userData = userData;
@@ -76,7 +90,7 @@ export class Body {
 
   /** @internal */
   check(): number {
-    const core = this.world.core;
+    const core = this.core;
     if (core.bodies.alive[this.slot] === 0 || core.bodies.generation[this.slot] !== this.generation) {
       throw new FulcrumError('body has been destroyed');
     }
@@ -84,109 +98,114 @@ export class Body {
   }
 
   private unlocked(): number {
-    if (this.world.core.locked) throw new FulcrumError('the world is locked during step()');
+    if (this.core.locked) throw new FulcrumError('the world is locked during step()');
     return this.check();
   }
 
   get isValid(): boolean {
-    const core = this.world.core;
+    const core = this.core;
     return core.bodies.alive[this.slot] === 1 && core.bodies.generation[this.slot] === this.generation;
   }
 
   get type(): BodyType {
-    return BODY_TYPES[this.world.core.bodies.kind[this.check()]];
+    return BODY_TYPES[this.core.bodies.kind[this.check()]];
   }
 
   get position(): Vec2 {
     const b = this.check();
-    const bodies = this.world.core.bodies;
+    const bodies = this.core.bodies;
     return { x: bodies.px[b], y: bodies.py[b] };
   }
 
   get angle(): number {
     const b = this.check();
-    return rotAngle(this.world.core.bodies.qc[b], this.world.core.bodies.qs[b]);
+    return rotAngle(this.core.bodies.qc[b], this.core.bodies.qs[b]);
   }
 
   /** rotation as a (cos, sin) pair, exactly as the engine keeps it */
   get rotation(): { c: number; s: number } {
     const b = this.check();
-    return { c: this.world.core.bodies.qc[b], s: this.world.core.bodies.qs[b] };
+    return { c: this.core.bodies.qc[b], s: this.core.bodies.qs[b] };
   }
 
   get worldCenter(): Vec2 {
     const b = this.check();
-    return { x: this.world.core.bodies.cx[b], y: this.world.core.bodies.cy[b] };
+    return { x: this.core.bodies.cx[b], y: this.core.bodies.cy[b] };
   }
 
   get localCenter(): Vec2 {
     const b = this.check();
-    return { x: this.world.core.bodies.lcx[b], y: this.world.core.bodies.lcy[b] };
+    return { x: this.core.bodies.lcx[b], y: this.core.bodies.lcy[b] };
   }
 
   get linearVelocity(): Vec2 {
     const s = this.check() * S.STRIDE;
-    const state = this.world.core.bodies.state;
+    const state = this.core.bodies.state;
     return { x: state[s + S.VX], y: state[s + S.VY] };
   }
 
   get angularVelocity(): number {
-    return this.world.core.bodies.state[this.check() * S.STRIDE + S.W];
+    return this.core.bodies.state[this.check() * S.STRIDE + S.W];
   }
 
   get mass(): number {
-    return this.world.core.bodies.mass[this.check()];
+    return this.core.bodies.mass[this.check()];
   }
 
   /** rotational inertia about the centre of mass */
   get inertia(): number {
-    return this.world.core.bodies.inertia[this.check()];
+    return this.core.bodies.inertia[this.check()];
   }
 
   get isAwake(): boolean {
-    return (this.world.core.bodies.flags[this.check()] & BodyFlag.AWAKE) !== 0;
+    return (this.core.bodies.flags[this.check()] & BodyFlag.AWAKE) !== 0;
   }
 
   get linearDamping(): number {
-    return this.world.core.bodies.linearDamping[this.check()];
+    return this.core.bodies.linearDamping[this.check()];
   }
 
   get angularDamping(): number {
-    return this.world.core.bodies.angularDamping[this.check()];
+    return this.core.bodies.angularDamping[this.check()];
   }
 
   get gravityScale(): number {
-    return this.world.core.bodies.gravityScale[this.check()];
+    return this.core.bodies.gravityScale[this.check()];
   }
 
   get fixedRotation(): boolean {
-    return (this.world.core.bodies.flags[this.check()] & BodyFlag.FIXED_ROTATION) !== 0;
+    return (this.core.bodies.flags[this.check()] & BodyFlag.FIXED_ROTATION) !== 0;
   }
 
   get bullet(): boolean {
-    return (this.world.core.bodies.flags[this.check()] & BodyFlag.BULLET) !== 0;
+    return (this.core.bodies.flags[this.check()] & BodyFlag.BULLET) !== 0;
   }
 
   get allowSleep(): boolean {
-    return (this.world.core.bodies.flags[this.check()] & BodyFlag.ALLOW_SLEEP) !== 0;
+    return (this.core.bodies.flags[this.check()] & BodyFlag.ALLOW_SLEEP) !== 0;
   }
 
   /** joints attached to this body, in creation order */
   get joints(): Joint[] {
-    return this.world.jointsOf(this.check());
+    // every joint in a world's core is a Joint that World.createJoint made
+    return (this.core.bodyJoints[this.check()] ?? []).slice() as Joint[];
   }
 
   /** shapes in creation order */
   get shapes(): ShapeHandle[] {
     const b = this.check();
-    return this.world.shapesOf(b);
+    const result: ShapeHandle[] = [];
+    const shapes = this.core.shapes;
+    for (let s = this.core.bodies.shapeHead[b]; s !== -1; s = shapes.next[s])
+      result.push(this.handles.shapes[s]!);
+    return result.reverse();
   }
 
   setPosition(position: Vec2): void {
     const b = this.unlocked();
     const p = checkCoordinates('position', position);
-    this.world.core.bodies.px[b] = p.x;
-    this.world.core.bodies.py[b] = p.y;
+    this.core.bodies.px[b] = p.x;
+    this.core.bodies.py[b] = p.y;
     this.moved(b);
   }
 
@@ -194,8 +213,8 @@ export class Body {
     const b = this.unlocked();
     const a = checkAngle('angle', angle);
     makeRotInto(a, rotScratch);
-    this.world.core.bodies.qc[b] = rotScratch.c;
-    this.world.core.bodies.qs[b] = rotScratch.s;
+    this.core.bodies.qc[b] = rotScratch.c;
+    this.core.bodies.qs[b] = rotScratch.s;
     this.moved(b);
   }
 
@@ -203,7 +222,7 @@ export class Body {
     const b = this.unlocked();
     const p = checkCoordinates('position', position);
     const a = checkAngle('angle', angle);
-    const bodies = this.world.core.bodies;
+    const bodies = this.core.bodies;
     makeRotInto(a, rotScratch);
     bodies.px[b] = p.x;
     bodies.py[b] = p.y;
@@ -213,7 +232,7 @@ export class Body {
   }
 
   private moved(b: number): void {
-    const core = this.world.core;
+    const core = this.core;
     core.poseEpoch++;
     core.bodies.updateCenter(b);
     core.syncBodyProxies(b);
@@ -223,7 +242,7 @@ export class Body {
   setLinearVelocity(velocity: Vec2): void {
     const b = this.unlocked();
     const v = checkVector('velocity', velocity, Limits.RATE);
-    const core = this.world.core;
+    const core = this.core;
     if (core.bodies.kind[b] === BodyKind.STATIC) return;
     const s = b * S.STRIDE;
     core.bodies.state[s + S.VX] = v.x;
@@ -234,7 +253,7 @@ export class Body {
   setAngularVelocity(omega: number): void {
     const b = this.unlocked();
     const w = checkRate('angularVelocity', omega);
-    const core = this.world.core;
+    const core = this.core;
     if (core.bodies.kind[b] === BodyKind.STATIC) return;
     if ((core.bodies.flags[b] & BodyFlag.FIXED_ROTATION) !== 0 && core.bodies.kind[b] === BodyKind.DYNAMIC)
       return;
@@ -244,31 +263,31 @@ export class Body {
 
   /** A kinematic body that starts moving wakes what rests on it. */
   private wakeWithNeighbours(b: number): void {
-    const core = this.world.core;
+    const core = this.core;
     core.wake(b);
     if (core.bodies.kind[b] === BodyKind.KINEMATIC) core.wakeTouching(b);
   }
 
   setLinearDamping(damping: number): void {
     const b = this.unlocked();
-    this.world.core.bodies.linearDamping[b] = checkNonNegativeRate('linearDamping', damping);
+    this.core.bodies.linearDamping[b] = checkNonNegativeRate('linearDamping', damping);
   }
 
   setAngularDamping(damping: number): void {
     const b = this.unlocked();
-    this.world.core.bodies.angularDamping[b] = checkNonNegativeRate('angularDamping', damping);
+    this.core.bodies.angularDamping[b] = checkNonNegativeRate('angularDamping', damping);
   }
 
   setGravityScale(scale: number): void {
     const b = this.unlocked();
-    this.world.core.bodies.gravityScale[b] = checkRate('gravityScale', scale);
-    this.world.core.wake(b);
+    this.core.bodies.gravityScale[b] = checkRate('gravityScale', scale);
+    this.core.wake(b);
   }
 
   setFixedRotation(fixed: boolean): void {
     const b = this.unlocked();
     checkBoolean('fixedRotation', fixed);
-    const core = this.world.core;
+    const core = this.core;
     if (fixed) core.bodies.flags[b] |= BodyFlag.FIXED_ROTATION;
     else core.bodies.flags[b] &= ~BodyFlag.FIXED_ROTATION;
     if (fixed) core.bodies.state[b * S.STRIDE + S.W] = 0;
@@ -279,14 +298,14 @@ export class Body {
   setBullet(bullet: boolean): void {
     const b = this.unlocked();
     checkBoolean('bullet', bullet);
-    if (bullet) this.world.core.bodies.flags[b] |= BodyFlag.BULLET;
-    else this.world.core.bodies.flags[b] &= ~BodyFlag.BULLET;
+    if (bullet) this.core.bodies.flags[b] |= BodyFlag.BULLET;
+    else this.core.bodies.flags[b] &= ~BodyFlag.BULLET;
   }
 
   setAllowSleep(allow: boolean): void {
     const b = this.unlocked();
     checkBoolean('allowSleep', allow);
-    const core = this.world.core;
+    const core = this.core;
     if (allow) core.bodies.flags[b] |= BodyFlag.ALLOW_SLEEP;
     else {
       core.bodies.flags[b] &= ~BodyFlag.ALLOW_SLEEP;
@@ -297,22 +316,22 @@ export class Body {
   setType(type: BodyType): void {
     const b = this.unlocked();
     if (!BODY_TYPES.includes(type)) fail('type', type, "'static', 'kinematic' or 'dynamic'");
-    this.world.changeBodyType(b, type);
+    changeBodyKind(this.core, b, BODY_KINDS[type], type);
   }
 
   /** Wakes the body, or puts it and everything it touches to sleep. */
   setAwake(awake: boolean): void {
     const b = this.unlocked();
     checkBoolean('awake', awake);
-    if (awake) this.world.core.wake(b);
-    else this.world.sleepBody(b);
+    if (awake) this.core.wake(b);
+    else sleepIsland(this.core, b);
   }
 
   /** Force in newtons at a world point (default: the centre of mass), until the end of the next step. */
   applyForce(force: Vec2, point?: Vec2): void {
     const b = this.unlocked();
     const f = checkVector('force', force, Limits.FORCE);
-    const core = this.world.core;
+    const core = this.core;
     const bodies = core.bodies;
     const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkCoordinates('point', point);
     if (bodies.kind[b] !== BodyKind.DYNAMIC) return;
@@ -325,7 +344,7 @@ export class Body {
   applyTorque(torque: number): void {
     const b = this.unlocked();
     const t = checkForce('torque', torque);
-    const core = this.world.core;
+    const core = this.core;
     if (core.bodies.kind[b] !== BodyKind.DYNAMIC) return;
     core.bodies.torque[b] += t;
     core.wake(b);
@@ -335,7 +354,7 @@ export class Body {
   applyLinearImpulse(impulse: Vec2, point?: Vec2): void {
     const b = this.unlocked();
     const i = checkVector('impulse', impulse, Limits.FORCE);
-    const core = this.world.core;
+    const core = this.core;
     const bodies = core.bodies;
     const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkCoordinates('point', point);
     if (bodies.kind[b] !== BodyKind.DYNAMIC) return;
@@ -349,7 +368,7 @@ export class Body {
   applyAngularImpulse(impulse: number): void {
     const b = this.unlocked();
     const i = checkForce('impulse', impulse);
-    const core = this.world.core;
+    const core = this.core;
     if (core.bodies.kind[b] !== BodyKind.DYNAMIC) return;
     core.bodies.state[b * S.STRIDE + S.W] += core.bodies.invInertia[b] * i;
     core.wake(b);
@@ -358,7 +377,7 @@ export class Body {
   getWorldPoint(localPoint: Vec2): Vec2 {
     const b = this.check();
     const p = checkCoordinates('localPoint', localPoint);
-    const bodies = this.world.core.bodies;
+    const bodies = this.core.bodies;
     const c = bodies.qc[b];
     const s = bodies.qs[b];
     return { x: c * p.x - s * p.y + bodies.px[b], y: s * p.x + c * p.y + bodies.py[b] };
@@ -367,7 +386,7 @@ export class Body {
   getLocalPoint(worldPoint: Vec2): Vec2 {
     const b = this.check();
     const p = checkCoordinates('worldPoint', worldPoint);
-    const bodies = this.world.core.bodies;
+    const bodies = this.core.bodies;
     const c = bodies.qc[b];
     const s = bodies.qs[b];
     const dx = p.x - bodies.px[b];
@@ -378,7 +397,7 @@ export class Body {
   getWorldVector(localVector: Vec2): Vec2 {
     const b = this.check();
     const v = checkCoordinates('localVector', localVector);
-    const bodies = this.world.core.bodies;
+    const bodies = this.core.bodies;
     const c = bodies.qc[b];
     const s = bodies.qs[b];
     return { x: c * v.x - s * v.y, y: s * v.x + c * v.y };
@@ -387,7 +406,7 @@ export class Body {
   getLocalVector(worldVector: Vec2): Vec2 {
     const b = this.check();
     const v = checkCoordinates('worldVector', worldVector);
-    const bodies = this.world.core.bodies;
+    const bodies = this.core.bodies;
     const c = bodies.qc[b];
     const s = bodies.qs[b];
     return { x: c * v.x + s * v.y, y: -s * v.x + c * v.y };
@@ -397,7 +416,7 @@ export class Body {
   getLinearVelocityAt(worldPoint: Vec2): Vec2 {
     const b = this.check();
     const p = checkCoordinates('worldPoint', worldPoint);
-    const bodies = this.world.core.bodies;
+    const bodies = this.core.bodies;
     const s = b * S.STRIDE;
     const w = bodies.state[s + S.W];
     return {
@@ -408,11 +427,11 @@ export class Body {
 
   createShape(geometry: Geometry, def?: ShapeDef): ShapeHandle {
     this.unlocked();
-    return this.world.createShapeOn(this, geometry, def);
+    return attachShape(this.handles, this, geometry, def);
   }
 
   destroyShape(shape: ShapeHandle): void {
     this.unlocked();
-    this.world.destroyShapeOf(this, shape);
+    detachShape(this.handles, this, shape);
   }
 }

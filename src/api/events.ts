@@ -4,8 +4,8 @@ import { fail } from '../core/errors';
 import type { Vec2 } from '../math/vec2';
 import { BEGIN_STRIDE, HIT_STRIDE, WarningCode } from '../store/event-buffers';
 import type { Body } from './body';
+import type { WorldHandles } from './handles';
 import type { ShapeHandle } from './shape';
-import type { World } from './world';
 
 export interface ContactBeginEvent {
   shapeA: ShapeHandle;
@@ -129,7 +129,7 @@ export class EventDispatcher {
   private sleepEvents: BodyEvent[] = [];
   private wakeEvents: BodyEvent[] = [];
 
-  constructor(private readonly world: World) {}
+  constructor(private readonly handles: WorldHandles) {}
 
   /** World.on, its arguments checked: plain JavaScript may pass anything. */
   on<K extends keyof WorldEventMap>(event: K, handler: (e: WorldEventMap[K]) => void): () => void {
@@ -146,7 +146,7 @@ export class EventDispatcher {
   /** Called at the end of step(): drops the old arrays and runs the handlers. */
   deliver(): void {
     this.cache = null;
-    const core = this.world.core;
+    const core = this.handles.core;
     core.events.seal(core.contacts, core.shapes);
     // sleep and wake also happen between steps (setAwake, setters): they are taken here and cleared
     const islands = core.islands;
@@ -154,7 +154,7 @@ export class EventDispatcher {
     this.wakeEvents = this.bodyEvents(islands.woken);
     islands.slept.clear();
     islands.woken.clear();
-    const warned = this.world.core.events.warningCount > 0;
+    const warned = this.handles.core.events.warningCount > 0;
     const handlers = this.handlers;
     let any = false;
     for (const name of EVENT_NAMES) if (handlers.has(name)) any = true;
@@ -183,8 +183,8 @@ export class EventDispatcher {
 
   current(): WorldEvents {
     if (this.cache) return this.cache;
-    const handles = this.world.shapeHandles;
-    const buf = this.world.core.events;
+    const handles = this.handles.shapes;
+    const buf = this.handles.core.events;
     const gens = buf.generations.data;
     let g = 0;
     // the handle of a shape as the record names it, or undefined when it is gone: in a live world
@@ -261,7 +261,7 @@ export class EventDispatcher {
   }
 
   private warnings(): WarningEvent[] {
-    const core = this.world.core;
+    const core = this.handles.core;
     const buf = core.events;
     const out: WarningEvent[] = [];
     for (let i = 0; i < buf.warningCount; i++) {
@@ -269,7 +269,7 @@ export class EventDispatcher {
       const count = d[4 * i + 1];
       const limit = d[4 * i + 2];
       const s = d[4 * i + 3];
-      const shape = s >= 0 && core.shapes.alive[s] !== 0 ? (this.world.shapeHandles[s] ?? null) : null;
+      const shape = s >= 0 && core.shapes.alive[s] !== 0 ? (this.handles.shapes[s] ?? null) : null;
       const where = shape ? `, e.g. on the body at ${showPoint(shape.body.position)}` : '';
       if (d[4 * i] === WarningCode.CONTACT_LIMIT) {
         out.push({
@@ -300,11 +300,11 @@ export class EventDispatcher {
   /** Body events from (slot, generation) pairs; a body destroyed since it slept or woke is left out. */
   private bodyEvents(list: IntList): BodyEvent[] {
     const out: BodyEvent[] = [];
-    const bodies = this.world.core.bodies;
+    const bodies = this.handles.core.bodies;
     for (let i = 0; i < list.length; i += 2) {
       const b = list.data[i];
       if (bodies.alive[b] !== 0 && (bodies.generation[b] | 0) === list.data[i + 1]) {
-        out.push({ body: this.world.bodyHandle(b) });
+        out.push({ body: this.handles.bodies[b]! });
       }
     }
     return out;

@@ -1,11 +1,16 @@
 import { checkBoolean, checkKnownKeys, FulcrumError, fail } from '../core/errors';
+import { checkRoom } from '../core/index-bound';
 import { checkCoordinates, checkDensity, checkNonNegativeRate } from '../core/limits';
+import { maxExtentFrom } from '../geometry/extent';
+import { Pack, packGeometry } from '../geometry/packed';
 import { rayCastGeometry, testPoint } from '../geometry/raycast';
-import { type Geometry, makeRayHit } from '../geometry/types';
+import { type Geometry, isGeometry, makeRayHit, ShapeKind } from '../geometry/types';
 import type { AABB } from '../math/aabb';
 import { makeTransform, type Vec2 } from '../math/vec2';
+import { BodyKind } from '../store/body-store';
 import { ShapeFlag } from '../store/shape-store';
 import type { Body } from './body';
+import type { WorldHandles } from './handles';
 
 export interface Filter {
   /** the categories this shape belongs to (bits) */
@@ -135,7 +140,7 @@ export class ShapeHandle {
 
   /** @internal */
   check(): number {
-    const shapes = this.body.world.core.shapes;
+    const shapes = this.body.core.shapes;
     if (shapes.alive[this.slot] === 0 || shapes.generation[this.slot] !== this.generation) {
       throw new FulcrumError('shape has been destroyed');
     }
@@ -143,12 +148,12 @@ export class ShapeHandle {
   }
 
   private unlocked(): number {
-    if (this.body.world.core.locked) throw new FulcrumError('the world is locked during step()');
+    if (this.body.core.locked) throw new FulcrumError('the world is locked during step()');
     return this.check();
   }
 
   get isValid(): boolean {
-    const shapes = this.body.world.core.shapes;
+    const shapes = this.body.core.shapes;
     return shapes.alive[this.slot] === 1 && shapes.generation[this.slot] === this.generation;
   }
 
@@ -158,31 +163,31 @@ export class ShapeHandle {
   }
 
   get friction(): number {
-    return this.body.world.core.shapes.friction[this.check()];
+    return this.body.core.shapes.friction[this.check()];
   }
 
   set friction(value: number) {
     const s = this.unlocked();
-    this.body.world.core.shapes.friction[s] = checkNonNegativeRate('friction', value);
+    this.body.core.shapes.friction[s] = checkNonNegativeRate('friction', value);
   }
 
   get restitution(): number {
-    return this.body.world.core.shapes.restitution[this.check()];
+    return this.body.core.shapes.restitution[this.check()];
   }
 
   set restitution(value: number) {
     const s = this.unlocked();
-    this.body.world.core.shapes.restitution[s] = checkNonNegativeRate('restitution', value);
+    this.body.core.shapes.restitution[s] = checkNonNegativeRate('restitution', value);
   }
 
   get density(): number {
-    return this.body.world.core.shapes.density[this.check()];
+    return this.body.core.shapes.density[this.check()];
   }
 
   /** Changing the density updates the body's mass at once. */
   set density(value: number) {
     const s = this.unlocked();
-    const core = this.body.world.core;
+    const core = this.body.core;
     core.shapes.density[s] = checkDensity('density', value);
     core.updateMass(core.shapes.body[s]);
     core.wake(core.shapes.body[s]);
@@ -190,7 +195,7 @@ export class ShapeHandle {
 
   get filter(): Filter {
     const s = this.check();
-    const shapes = this.body.world.core.shapes;
+    const shapes = this.body.core.shapes;
     return {
       categoryBits: shapes.categoryBits[s],
       maskBits: shapes.maskBits[s],
@@ -202,7 +207,7 @@ export class ShapeHandle {
   set filter(value: Partial<Filter>) {
     const s = this.unlocked();
     const f = checkFilter('filter', value);
-    const shapes = this.body.world.core.shapes;
+    const shapes = this.body.core.shapes;
     const category = shapes.categoryBits[s];
     const mask = shapes.maskBits[s];
     const group = shapes.groupIndex[s];
@@ -216,13 +221,13 @@ export class ShapeHandle {
   }
 
   get isSensor(): boolean {
-    return (this.body.world.core.shapes.flags[this.check()] & ShapeFlag.SENSOR) !== 0;
+    return (this.body.core.shapes.flags[this.check()] & ShapeFlag.SENSOR) !== 0;
   }
 
   set isSensor(value: boolean) {
     const s = this.unlocked();
     checkBoolean('isSensor', value);
-    const shapes = this.body.world.core.shapes;
+    const shapes = this.body.core.shapes;
     if (value === ((shapes.flags[s] & ShapeFlag.SENSOR) !== 0)) return;
     // the pairs end as what they were (a sensor's overlaps end as sensor events)
     this.resetContacts(s);
@@ -231,19 +236,19 @@ export class ShapeHandle {
   }
 
   get enableHitEvents(): boolean {
-    return (this.body.world.core.shapes.flags[this.check()] & ShapeFlag.HIT_EVENTS) !== 0;
+    return (this.body.core.shapes.flags[this.check()] & ShapeFlag.HIT_EVENTS) !== 0;
   }
 
   set enableHitEvents(value: boolean) {
     const s = this.unlocked();
     checkBoolean('enableHitEvents', value);
-    const shapes = this.body.world.core.shapes;
+    const shapes = this.body.core.shapes;
     if (value) shapes.flags[s] |= ShapeFlag.HIT_EVENTS;
     else shapes.flags[s] &= ~ShapeFlag.HIT_EVENTS;
   }
 
   private resetContacts(s: number): void {
-    const core = this.body.world.core;
+    const core = this.body.core;
     core.destroyShapeContacts(s, true, true);
     core.broadPhase.bufferMove(core.shapes.proxyKey[s]);
   }
@@ -251,7 +256,7 @@ export class ShapeHandle {
   /** Tight world AABB as of the last step or move. */
   getAABB(): AABB {
     const s = this.check();
-    const shapes = this.body.world.core.shapes;
+    const shapes = this.body.core.shapes;
     return {
       lowerBound: { x: shapes.minX[s], y: shapes.minY[s] },
       upperBound: { x: shapes.maxX[s], y: shapes.maxY[s] },
@@ -261,7 +266,7 @@ export class ShapeHandle {
   testPoint(point: Vec2): boolean {
     const s = this.check();
     const p = checkCoordinates('point', point);
-    const core = this.body.world.core;
+    const core = this.body.core;
     return testPoint(this.geometry, core.fillTransform(core.shapes.body[s], xf), p.x, p.y);
   }
 
@@ -270,7 +275,7 @@ export class ShapeHandle {
     const s = this.check();
     const o = checkCoordinates('origin', origin);
     const t = checkCoordinates('translation', translation);
-    const core = this.body.world.core;
+    const core = this.body.core;
     core.fillTransform(core.shapes.body[s], xf);
     if (!rayCastGeometry(this.geometry, xf, o.x, o.y, t.x, t.y, hit)) return null;
     return {
@@ -279,4 +284,70 @@ export class ShapeHandle {
       fraction: hit.fraction,
     };
   }
+}
+
+/** @internal Body.createShape: validates, then adds the shape to the body's list and the broad phase. */
+export function attachShape(
+  handles: WorldHandles,
+  body: Body,
+  geometry: Geometry,
+  def: ShapeDef | undefined,
+): ShapeHandle {
+  const b = body.check();
+  if (!isGeometry(geometry))
+    fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment');
+  const core = handles.core;
+  if (geometry.kind === ShapeKind.SEGMENT && core.bodies.kind[b] === BodyKind.DYNAMIC) {
+    throw new FulcrumError('geometry: a segment can only be attached to a static or kinematic body');
+  }
+  const d = resolveShapeDef(def);
+  const shapes = core.shapes;
+  checkRoom('shapes', shapes.liveCount);
+  const s = shapes.allocate();
+  shapes.body[s] = b;
+  shapes.geometry[s] = geometry;
+  packGeometry(geometry, shapes.packed, s * Pack.STRIDE);
+  shapes.kind[s] = geometry.kind;
+  shapes.flags[s] = d.flags;
+  shapes.density[s] = d.density;
+  shapes.friction[s] = d.friction;
+  shapes.restitution[s] = d.restitution;
+  shapes.radius[s] = geometry.kind === ShapeKind.SEGMENT ? 0 : geometry.radius;
+  shapes.originExtent[s] = maxExtentFrom(geometry, 0, 0);
+  shapes.categoryBits[s] = d.filter.categoryBits;
+  shapes.maskBits[s] = d.filter.maskBits;
+  shapes.groupIndex[s] = d.filter.groupIndex;
+  shapes.next[s] = core.bodies.shapeHead[b];
+  core.bodies.shapeHead[b] = s;
+  core.updateMass(b);
+  core.createProxy(s, true);
+  const handle = new ShapeHandle(body, s, shapes.generation[s], geometry, d.userData);
+  handles.shapes[s] = handle;
+  core.wake(b);
+  return handle;
+}
+
+/** @internal Body.destroyShape: ends the shape's contacts without events and takes it off the body. */
+export function detachShape(handles: WorldHandles, body: Body, shape: ShapeHandle): void {
+  const b = body.check();
+  if (!(shape instanceof ShapeHandle) || shape.body !== body) fail('shape', shape, 'a shape of this body');
+  const s = shape.check();
+  handles.dispatcher.settle();
+  const core = handles.core;
+  core.destroyShapeContacts(s, true, false);
+  core.destroyProxy(s);
+  const shapes = core.shapes;
+  // unlink from the body's list
+  let prev = -1;
+  let x = core.bodies.shapeHead[b];
+  while (x !== s) {
+    prev = x;
+    x = shapes.next[x];
+  }
+  if (prev === -1) core.bodies.shapeHead[b] = shapes.next[s];
+  else shapes.next[prev] = shapes.next[s];
+  shapes.free(s);
+  handles.shapes[s] = undefined;
+  core.updateMass(b);
+  core.wake(b);
 }

@@ -20,6 +20,7 @@ import { ShapeStore } from '../store/shape-store';
 import { WorkingMemory, WorldCore } from '../world/world-core';
 import { Body } from './body';
 import { EventDispatcher } from './events';
+import { WorldHandles } from './handles';
 import { ShapeHandle } from './shape';
 import {
   type AnyTypedArray,
@@ -88,6 +89,7 @@ const HEADER_SIZE = 20;
  * stable names, independent of minification. Never rename a key (it is in the bytes).
  */
 const CLASSES: Record<string, abstract new (...args: never[]) => object> = {
+  WorldHandles,
   Body,
   ShapeHandle,
   DistanceJoint,

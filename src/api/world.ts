@@ -6,7 +6,7 @@ import {
   FulcrumError,
   fail,
 } from '../core/errors';
-import { IndexBound } from '../core/index-bound';
+import { checkRoom, IndexBound } from '../core/index-bound';
 import {
   checkAngle,
   checkCoordinates,
@@ -49,9 +49,11 @@ import { ContactFlag } from '../store/contact-store';
 import { collectAwakeBodies, finalizeBodies, solve, updateSleep } from '../world/solve';
 import { createNewContacts, updateContacts } from '../world/update-contacts';
 import { WorldCore } from '../world/world-core';
-import { BODY_DEF_KEYS, BODY_TYPES, Body, type BodyDef, type BodyType } from './body';
-import { EventDispatcher, type WorldEventMap, type WorldEvents } from './events';
-import { resolveShapeDef, type ShapeDef, ShapeHandle } from './shape';
+import { sleepIsland } from '../world/world-edits';
+import { BODY_DEF_KEYS, BODY_KINDS, BODY_TYPES, Body, type BodyDef, type BodyType } from './body';
+import type { WorldEventMap, WorldEvents } from './events';
+import { WorldHandles } from './handles';
+import { resolveShapeDef, type ShapeDef, type ShapeHandle } from './shape';
 import { readSnapshot, writeSnapshot } from './snapshot';
 
 export interface WorldDef {
@@ -69,21 +71,14 @@ const WORLD_DEF_KEYS = [
   'enableContinuous',
   'lengthUnitsPerMeter',
 ] as const;
-const BODY_KINDS = {
-  static: BodyKind.STATIC,
-  kinematic: BodyKind.KINEMATIC,
-  dynamic: BodyKind.DYNAMIC,
-} as const;
 const rotScratch = { c: 1, s: 0 };
 
 /** A physics world: bodies, their shapes, contacts and the step that moves them. */
 export class World {
   /** @internal the engine state behind this API */
   readonly core: WorldCore;
-  private readonly bodyHandles: (Body | undefined)[] = [];
-  /** @internal */
-  readonly shapeHandles: (ShapeHandle | undefined)[] = [];
-  private readonly dispatcher = new EventDispatcher(this);
+  /** @internal the handles of its bodies and shapes, and its events */
+  readonly handles: WorldHandles;
 
   constructor(def: WorldDef = {}) {
     if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
@@ -99,6 +94,7 @@ export class World {
         ? 1
         : checkRange('lengthUnitsPerMeter', def.lengthUnitsPerMeter, Limits.MIN_UNITS, Limits.MAX_UNITS);
     this.core = new WorldCore(units);
+    this.handles = new WorldHandles(this.core);
     this.core.gravityX = gravity.x;
     this.core.gravityY = gravity.y;
     this.core.subSteps = subSteps;
@@ -190,7 +186,7 @@ export class World {
 
   /** Live bodies in slot order. */
   get bodies(): Iterable<Body> {
-    const handles = this.bodyHandles;
+    const handles = this.handles.bodies;
     const bodies = this.core.bodies;
     return {
       *[Symbol.iterator]() {
@@ -256,9 +252,9 @@ export class World {
     bodies.angularDamping[b] = angularDamping;
     bodies.gravityScale[b] = gravityScale;
     core.updateMass(b);
-    if (kind !== BodyKind.STATIC && !awake) this.sleepBody(b);
-    const handle = new Body(this, b, bodies.generation[b], def.userData);
-    this.bodyHandles[b] = handle;
+    if (kind !== BodyKind.STATIC && !awake) sleepIsland(core, b);
+    const handle = new Body(this, this.handles, b, bodies.generation[b], def.userData);
+    this.handles.bodies[b] = handle;
     return handle;
   }
 
@@ -266,9 +262,9 @@ export class World {
   destroyBody(body: Body): void {
     this.checkUnlocked();
     const b = this.checkBody('body', body);
-    this.dispatcher.settle();
+    this.handles.dispatcher.settle();
     const core = this.core;
-    for (const joint of core.bodyJoints[b]?.slice() ?? []) this.removeJoint(joint);
+    for (const joint of this.jointsOf(b)) this.removeJoint(joint);
     core.bodyJoints[b] = undefined;
     core.wakeTouching(b);
     const contacts = core.contacts;
@@ -283,12 +279,12 @@ export class World {
       const next = core.shapes.next[s];
       core.destroyProxy(s);
       core.shapes.free(s);
-      this.shapeHandles[s] = undefined;
+      this.handles.shapes[s] = undefined;
       s = next;
     }
     core.islands.remove(core.bodies, b);
     core.bodies.free(b);
-    this.bodyHandles[b] = undefined;
+    this.handles.bodies[b] = undefined;
   }
 
   /** Creates a joint (see JointDef for the types and their options); it wakes both bodies. */
@@ -350,12 +346,12 @@ export class World {
 
   /** Live joints in creation order. */
   get joints(): readonly Joint[] {
-    return this.core.joints.slice();
+    // every joint in the core is a Joint that createJoint made
+    return this.core.joints.slice() as Joint[];
   }
 
-  /** @internal */
-  jointsOf(b: number): Joint[] {
-    return (this.core.bodyJoints[b] ?? []).slice();
+  private jointsOf(b: number): Joint[] {
+    return (this.core.bodyJoints[b] ?? []).slice() as Joint[];
   }
 
   /** @internal */
@@ -364,146 +360,13 @@ export class World {
     return body.check();
   }
 
-  /** @internal */
-  shapesOf(b: number): ShapeHandle[] {
-    const result: ShapeHandle[] = [];
-    const shapes = this.core.shapes;
-    for (let s = this.core.bodies.shapeHead[b]; s !== -1; s = shapes.next[s])
-      result.push(this.shapeHandles[s]!);
-    return result.reverse();
-  }
-
-  /** @internal */
-  createShapeOn(body: Body, geometry: Geometry, def: ShapeDef | undefined): ShapeHandle {
-    const b = body.check();
-    if (!isGeometry(geometry))
-      fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment');
-    const core = this.core;
-    if (geometry.kind === ShapeKind.SEGMENT && core.bodies.kind[b] === BodyKind.DYNAMIC) {
-      throw new FulcrumError('geometry: a segment can only be attached to a static or kinematic body');
-    }
-    const d = resolveShapeDef(def);
-    const shapes = core.shapes;
-    checkRoom('shapes', shapes.liveCount);
-    const s = shapes.allocate();
-    shapes.body[s] = b;
-    shapes.geometry[s] = geometry;
-    packGeometry(geometry, shapes.packed, s * Pack.STRIDE);
-    shapes.kind[s] = geometry.kind;
-    shapes.flags[s] = d.flags;
-    shapes.density[s] = d.density;
-    shapes.friction[s] = d.friction;
-    shapes.restitution[s] = d.restitution;
-    shapes.radius[s] = geometry.kind === ShapeKind.SEGMENT ? 0 : geometry.radius;
-    shapes.originExtent[s] = maxExtentFrom(geometry, 0, 0);
-    shapes.categoryBits[s] = d.filter.categoryBits;
-    shapes.maskBits[s] = d.filter.maskBits;
-    shapes.groupIndex[s] = d.filter.groupIndex;
-    shapes.next[s] = core.bodies.shapeHead[b];
-    core.bodies.shapeHead[b] = s;
-    core.updateMass(b);
-    core.createProxy(s, true);
-    const handle = new ShapeHandle(body, s, shapes.generation[s], geometry, d.userData);
-    this.shapeHandles[s] = handle;
-    core.wake(b);
-    return handle;
-  }
-
-  /** @internal */
-  destroyShapeOf(body: Body, shape: ShapeHandle): void {
-    const b = body.check();
-    if (!(shape instanceof ShapeHandle) || shape.body !== body) fail('shape', shape, 'a shape of this body');
-    const s = shape.check();
-    this.dispatcher.settle();
-    const core = this.core;
-    core.destroyShapeContacts(s, true, false);
-    core.destroyProxy(s);
-    const shapes = core.shapes;
-    // unlink from the body's list
-    let prev = -1;
-    let x = core.bodies.shapeHead[b];
-    while (x !== s) {
-      prev = x;
-      x = shapes.next[x];
-    }
-    if (prev === -1) core.bodies.shapeHead[b] = shapes.next[s];
-    else shapes.next[prev] = shapes.next[s];
-    shapes.free(s);
-    this.shapeHandles[s] = undefined;
-    core.updateMass(b);
-    core.wake(b);
-  }
-
-  /** @internal */
-  changeBodyType(b: number, type: BodyType): void {
-    const core = this.core;
-    const bodies = core.bodies;
-    const kind = BODY_KINDS[type];
-    if (bodies.kind[b] === kind) return;
-    const shapes = core.shapes;
-    if (kind === BodyKind.DYNAMIC) {
-      for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-        if (shapes.kind[s] === ShapeKind.SEGMENT) {
-          throw new FulcrumError(
-            `type: a body with a segment shape cannot be 'dynamic', got ${JSON.stringify(type)}`,
-          );
-        }
-      }
-    }
-    core.wakeTouching(b);
-    core.islands.remove(bodies, b);
-    for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-      core.destroyShapeContacts(s, true, true);
-      core.destroyProxy(s);
-    }
-    bodies.kind[b] = kind;
-    bodies.awakeEpoch++;
-    if (kind === BodyKind.STATIC) {
-      bodies.flags[b] &= ~BodyFlag.AWAKE;
-      const st = b * S.STRIDE;
-      bodies.state[st + S.VX] = 0;
-      bodies.state[st + S.VY] = 0;
-      bodies.state[st + S.W] = 0;
-    } else {
-      bodies.flags[b] |= BodyFlag.AWAKE;
-      bodies.sleepTime[b] = 0;
-    }
-    core.updateMass(b);
-    for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) core.createProxy(s, true);
-  }
-
-  /** @internal Puts a body and every body it touches (transitively) to sleep as one island. */
-  sleepBody(b: number): void {
-    const core = this.core;
-    const bodies = core.bodies;
-    if (bodies.kind[b] === BodyKind.STATIC) return;
-    core.wake(b); // leave any island it was in, so the new island is complete
-    const contacts = core.contacts;
-    const members: number[] = [b];
-    const seen = new Set<number>(members);
-    for (let i = 0; i < members.length; i++) {
-      const x = members[i];
-      for (let e = bodies.contactHead[x]; e !== -1; e = contacts.edgeNext[e]) {
-        const c = e >> 1;
-        if ((contacts.flags[c] & ContactFlag.TOUCHING) === 0) continue;
-        const other = contacts.bodyA[c] === x ? contacts.bodyB[c] : contacts.bodyA[c];
-        if (bodies.kind[other] !== BodyKind.DYNAMIC || seen.has(other)) continue;
-        seen.add(other);
-        core.wake(other);
-        members.push(other);
-      }
-    }
-    members.sort((p, q) => p - q);
-    core.islands.sleepGroup(bodies, members);
-  }
-
   on<K extends keyof WorldEventMap>(event: K, handler: (e: WorldEventMap[K]) => void): () => void {
-    return this.dispatcher.on(event, handler);
+    return this.handles.dispatcher.on(event, handler);
   }
 
   /** The events of the last step, as arrays, until the next step. */
   get events(): WorldEvents {
-    return this.dispatcher.current();
+    return this.handles.dispatcher.current();
   }
 
   /** Advances the world by `dt` seconds (use a fixed step such as 1/60). */
@@ -511,7 +374,7 @@ export class World {
     this.checkUnlocked();
     checkZeroOrRange('dt', dt, Limits.MIN_DT, Limits.MAX_DT);
     const core = this.core;
-    this.dispatcher.emitStep('preStep', dt);
+    this.handles.dispatcher.emitStep('preStep', dt);
     core.locked = true;
     core.events.clear();
     core.events.takePending(core.shapes);
@@ -527,13 +390,8 @@ export class World {
     } finally {
       core.locked = false;
     }
-    this.dispatcher.deliver();
-    this.dispatcher.emitStep('postStep', dt);
-  }
-
-  /** @internal */
-  bodyHandle(b: number): Body {
-    return this.bodyHandles[b]!;
+    this.handles.dispatcher.deliver();
+    this.handles.dispatcher.emitStep('postStep', dt);
   }
 
   // Queries (issue 4): rules and orders are documented in src/query/*.ts
@@ -596,6 +454,3 @@ export class World {
 }
 
 /** Refuses to add one more of `what` to a world that holds IndexBound.MAX of them. */
-function checkRoom(what: string, count: number): void {
-  if (count >= IndexBound.MAX) throw new FulcrumError(`${what}: a world holds at most ${IndexBound.MAX}`);
-}

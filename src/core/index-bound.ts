@@ -1,3 +1,5 @@
+import { FulcrumError } from './errors';
+
 /**
  * The most bodies, shapes, joints and contacts a world holds at once, and the mask hot loops put on
  * their counts and slot numbers. V8 types `i * stride + field` as an integer that may overflow 32
@@ -9,4 +11,9 @@
  */
 export enum IndexBound {
   MAX = 0xffffff,
+}
+
+/** Throws when a world already holds the most `what` (bodies, shapes, joints) it can. */
+export function checkRoom(what: string, count: number): void {
+  if (count >= IndexBound.MAX) throw new FulcrumError(`${what}: a world holds at most ${IndexBound.MAX}`);
 }

@@ -6,6 +6,7 @@ import { Anchor, H, writeStepData } from '../solver/hinge-batch';
 import type { JointContext } from '../solver/joint-context';
 import { relativeAngle } from '../solver/joint-math';
 import { S } from '../store/body-store';
+import type { WorldCore } from '../world/world-core';
 
 export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'mouse' | 'motor';
 
@@ -28,6 +29,12 @@ export abstract class Joint {
   userData: unknown;
   /** @internal */
   destroyed = false;
+  /** @internal the bodies' slots, fixed for the joint's life */
+  readonly slotA: number;
+  /** @internal */
+  readonly slotB: number;
+  /** @internal the engine state of the joint's world: a handle changes the world through it */
+  protected readonly core: WorldCore;
   /** @internal anchors in the bodies' frames, relative to their origins */
   localAnchorAx: number;
   /** @internal */
@@ -102,8 +109,11 @@ export abstract class Joint {
     userData: unknown,
   ) {
     this.world = world;
+    this.core = world.core;
     this.bodyA = bodyA;
     this.bodyB = bodyB;
+    this.slotA = bodyA.slot;
+    this.slotB = bodyB.slot;
     this.localAnchorAx = localAnchorA.x;
     this.localAnchorAy = localAnchorA.y;
     this.localAnchorBx = localAnchorB.x;
@@ -124,10 +134,10 @@ export abstract class Joint {
   /** @internal Validates a setter's call and wakes both bodies so the change takes effect. */
   protected changing(): void {
     this.check();
-    if (this.world.core.locked) throw new FulcrumError('the world is locked during step()');
-    this.world.core.jointEpoch++;
-    this.world.core.wake(this.bodyA.slot);
-    this.world.core.wake(this.bodyB.slot);
+    if (this.core.locked) throw new FulcrumError('the world is locked during step()');
+    this.core.jointEpoch++;
+    this.core.wake(this.slotA);
+    this.core.wake(this.slotB);
   }
 
   /** Anchor on body A, in world coordinates. */
@@ -179,8 +189,8 @@ export abstract class Joint {
     anchors: Float64Array,
     i: number,
   ): void {
-    const a = this.bodyA.slot;
-    const b = this.bodyB.slot;
+    const a = this.slotA;
+    const b = this.slotB;
     this.a = a;
     this.b = b;
     this.invH = ctx.invH;

@@ -84,10 +84,10 @@ export class MotorJoint extends Joint {
   /** @internal */
   prepare(ctx: JointContext): void {
     // anchors at the centres of mass
-    this.localAnchorAx = ctx.lcx[this.bodyA.slot];
-    this.localAnchorAy = ctx.lcy[this.bodyA.slot];
-    this.localAnchorBx = ctx.lcx[this.bodyB.slot];
-    this.localAnchorBy = ctx.lcy[this.bodyB.slot];
+    this.localAnchorAx = ctx.lcx[this.slotA];
+    this.localAnchorAy = ctx.lcy[this.slotA];
+    this.localAnchorBx = ctx.lcx[this.slotB];
+    this.localAnchorBy = ctx.lcy[this.slotB];
     this.prepareBase(ctx);
     const c = ctx.qc[this.a];
     const s = ctx.qs[this.a];

@@ -52,7 +52,7 @@ export class MouseJoint extends Joint {
     const t = checkCoordinates('target', target);
     this.o.targetX = t.x;
     this.o.targetY = t.y;
-    this.world.core.wake(this.bodyB.slot);
+    this.core.wake(this.slotB);
   }
 
   getReactionForce(): Vec2 {

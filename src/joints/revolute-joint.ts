@@ -134,7 +134,7 @@ export class RevoluteJoint extends Joint {
     this.check();
     if (this.batchIndex >= 0) {
       // the hinge batch keeps the impulse until the hinge leaves it (see HingeBatch)
-      const batch = this.world.core.hingeBatch;
+      const batch = this.core.hingeBatch;
       const base = this.batchIndex * H.STRIDE;
       return { x: batch.data[base + H.LX] * batch.invH, y: batch.data[base + H.LY] * batch.invH };
     }

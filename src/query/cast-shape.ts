@@ -75,5 +75,5 @@ export function castShape(
     }
   }
   if (best === -1) return null;
-  return makeCastHit(world.shapeHandles[best]!, px, py, nx, ny, fraction);
+  return makeCastHit(world.handles.shapes[best]!, px, py, nx, ny, fraction);
 }

@@ -34,7 +34,7 @@ const distance: DistanceOutput = makeDistanceOutput();
 function handles(world: World): ShapeHandle[] {
   selected.sort();
   const result: ShapeHandle[] = new Array(selected.length);
-  for (let i = 0; i < selected.length; i++) result[i] = world.shapeHandles[selected.data[i]]!;
+  for (let i = 0; i < selected.length; i++) result[i] = world.handles.shapes[selected.data[i]]!;
   return result;
 }
 

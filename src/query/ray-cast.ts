@@ -121,7 +121,7 @@ export function castRay(
   if (v.tx !== 0 || v.ty !== 0) core.broadPhase.rayCast(v.ox, v.oy, v.tx, v.ty, 1, v);
   v.core = null;
   if (v.slot === -1) return null;
-  return makeCastHit(world.shapeHandles[v.slot]!, v.px, v.py, v.nx, v.ny, v.fraction);
+  return makeCastHit(world.handles.shapes[v.slot]!, v.px, v.py, v.nx, v.ny, v.fraction);
 }
 
 /** Every shape hit by the ray, sorted by fraction, then by shape slot. */
@@ -150,7 +150,7 @@ export function castRayAll(
     const k = 5 * i;
     result.push(
       makeCastHit(
-        world.shapeHandles[v.slots[i]]!,
+        world.handles.shapes[v.slots[i]]!,
         values[k + 1],
         values[k + 2],
         values[k + 3],

@@ -187,7 +187,7 @@ function drawShapes(world: World, draw: DebugDraw, flags: DebugDrawFlags, option
   const style = { fill: 0, fillAlpha: 1, stroke: 0 } as ShapeStyle;
   for (let b = 0; b < bodies.slotCount; b++) {
     if (bodies.alive[b] === 0) continue;
-    const body = world.bodyHandle(b);
+    const body = world.handles.bodies[b]!;
     drawnTransform(world, body, options, xf);
     if (draw.drawBody?.(body, xf)) continue;
     let color = options?.colorOf?.(body) ?? defaultBodyColor(world, body);
@@ -197,7 +197,7 @@ function drawShapes(world: World, draw: DebugDraw, flags: DebugDrawFlags, option
       const g = shapes.geometry[s]!;
       const sensor = (shapes.flags[s] & ShapeFlag.SENSOR) !== 0;
       style.body = body;
-      style.shape = world.shapeHandles[s]!;
+      style.shape = world.handles.shapes[s]!;
       if (sensor) {
         style.fill = flags.wireframe ? null : colors.sensor;
         style.fillAlpha = 0.18;
@@ -253,7 +253,7 @@ function drawContacts(world: World, draw: DebugDraw, flags: DebugDrawFlags, opti
     if (contacts.alive[c] === 0) continue;
     const f = contacts.flags[c];
     if ((f & ContactFlag.TOUCHING) === 0 || (f & ContactFlag.SENSOR) !== 0) continue;
-    const bodyA = world.bodyHandle(contacts.bodyA[c]);
+    const bodyA = world.handles.bodies[contacts.bodyA[c]]!;
     const n = contacts.pointCount[c];
     for (let i = 0; i < n; i++) {
       const k = c * 2 + i;
@@ -284,7 +284,7 @@ function drawVelocitiesAndCenters(
   const center: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
   for (let b = 0; b < bodies.slotCount; b++) {
     if (bodies.alive[b] === 0 || bodies.kind[b] === BodyKind.STATIC) continue;
-    const body = world.bodyHandle(b);
+    const body = world.handles.bodies[b]!;
     drawnTransform(world, body, options, xf);
     transformPoint(xf, { x: bodies.lcx[b], y: bodies.lcy[b] }, center.p);
     center.q.c = xf.q.c;

@@ -1,10 +1,10 @@
 import { growF64, growI32, growU8 } from '../core/grow';
 import { IndexBound } from '../core/index-bound';
 import { findRoot, unionRoots } from '../core/union-find';
-import type { Joint } from '../joints/joint';
 import { BodyKind, type BodyStore } from '../store/body-store';
 import { V } from './body-solver';
 import { ContactConstraints } from './contact-solver';
+import type { SolverJoint } from './solver-joint';
 
 /** the most times an island's substeps are multiplied to carry a heavy load */
 export const MAX_FINE_FACTOR = 4;
@@ -44,7 +44,7 @@ export class FineIslands {
     bodies: BodyStore,
     awake: Int32Array,
     awakeCount: number,
-    joints: readonly Joint[],
+    joints: readonly SolverJoint[],
   ): boolean {
     if (this.fine.length < bodies.capacity) {
       this.fine = growU8(this.fine, bodies.capacity);
@@ -63,8 +63,8 @@ export class FineIslands {
     }
     this.joinContacts(cc, kind);
     for (const joint of joints) {
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+      const a = joint.slotA;
+      const b = joint.slotB;
       if (kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) unionRoots(this.parent, a, b);
     }
     for (let j = 0; j < cc.supportCount; j++) {
@@ -74,8 +74,8 @@ export class FineIslands {
       marks[findRoot(this.parent, kind[a] === BodyKind.DYNAMIC ? a : b)] |= 1;
     }
     for (const joint of joints) {
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+      const a = joint.slotA;
+      const b = joint.slotB;
       if (kind[a] === BodyKind.DYNAMIC) marks[findRoot(this.parent, a)] |= 2;
       if (kind[b] === BodyKind.DYNAMIC) marks[findRoot(this.parent, b)] |= 2;
     }

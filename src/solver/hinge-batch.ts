@@ -1,12 +1,12 @@
 import { growF64, growI32 } from '../core/grow';
 import { IndexBound } from '../core/index-bound';
-import type { Joint } from '../joints/joint';
 import { S } from '../store/body-store';
 import { GraphColoring } from './graph-color';
 import type { JointContext } from './joint-context';
 import type { Softness } from './softness';
+import type { SolverJoint } from './solver-joint';
 
-// Layout of one hinge in `HingeBatch.data` (doubles); see Joint for the meaning of the fields.
+// Layout of one hinge in `HingeBatch.data` (doubles); see SolverJoint for the meaning of the fields.
 export enum H {
   MA = 0,
   IA = 1,
@@ -146,9 +146,9 @@ export function turnStepData(
  * grids, cloth, loops the tree does not take) packed into flat arrays, like the contacts: a joint
  * object keeps each field in its own heap box and is reached through a virtual call, which made
  * such joints cost more than their arithmetic. The joints pack their step data here
- * (Joint.packHinge, in place of prepare). Their impulses stay here from step to step (a hinge's
+ * (SolverJoint.packHinge, in place of prepare). Their impulses stay here from step to step (a hinge's
  * reaction force reads them here) and go back to the joints when the batch is made anew
- * (Joint.unpackHinge): handing them over every step took a call per hinge (3 % of a hinge grid's
+ * (SolverJoint.unpackHinge): handing them over every step took a call per hinge (3 % of a hinge grid's
  * step). The arithmetic is the revolute joint's point rows, term for term.
  * @internal
  */
@@ -159,19 +159,19 @@ export class HingeBatch {
   ids = new Int32Array(0);
   /** each hinge's anchors (Anchor layout) */
   anchors = new Float64Array(0);
-  joints: Joint[] = [];
+  joints: SolverJoint[] = [];
   /** the last batch's records and hinges while classify makes the next (two sets, swapped) */
   private spareData = new Float64Array(0);
   private spareAnchors = new Float64Array(0);
-  private spareJoints: Joint[] = [];
+  private spareJoints: SolverJoint[] = [];
   /** the colouring that orders the hinges (see orderByColor) */
   private readonly coloring = new GraphColoring();
   /** the active joints that are not in the batch, in their order */
-  readonly otherActive: Joint[] = [];
+  readonly otherActive: SolverJoint[] = [];
   /** 1/h of the last step the batch solved (the hinges' reaction forces) */
   invH = 0;
   /** the iterative joints that are not in the batch, in their order */
-  readonly otherIterative: Joint[] = [];
+  readonly otherIterative: SolverJoint[] = [];
   /**
    * The world's pose epoch when the step began, and whether its last relax carried the step data
    * over to the next step (see relax): then, unless a pose changed since, the next step needs no
@@ -186,7 +186,12 @@ export class HingeBatch {
    * (`rebuilt`), the hinges are the same as last step and only their step data is refreshed, from
    * the anchors kept here, with last step's impulses.
    */
-  prepare(active: readonly Joint[], iterative: readonly Joint[], ctx: JointContext, rebuilt: boolean): void {
+  prepare(
+    active: readonly SolverJoint[],
+    iterative: readonly SolverJoint[],
+    ctx: JointContext,
+    rebuilt: boolean,
+  ): void {
     const poseEpoch = ctx.poseEpoch;
     const carry = this.carried && this.stepPoseEpoch === poseEpoch;
     if (rebuilt) this.classify(active, iterative, ctx, carry);
@@ -202,8 +207,8 @@ export class HingeBatch {
    * instead of step data worked out afresh: the same bits as when the batch is kept.
    */
   private classify(
-    active: readonly Joint[],
-    iterative: readonly Joint[],
+    active: readonly SolverJoint[],
+    iterative: readonly SolverJoint[],
     ctx: JointContext,
     carry: boolean,
   ): void {
@@ -269,8 +274,8 @@ export class HingeBatch {
     const coloring = this.coloring;
     coloring.begin(ctx.invMass.length, n);
     for (let i = 0; i < n; i++) {
-      const a = joints[i].bodyA.slot;
-      const b = joints[i].bodyB.slot;
+      const a = joints[i].slotA;
+      const b = joints[i].slotB;
       const movableA = ctx.invMass[a] > 0 || ctx.invInertia[a] > 0;
       const movableB = ctx.invMass[b] > 0 || ctx.invInertia[b] > 0;
       coloring.add(i, movableA ? a : -1, movableB ? b : -1);
@@ -286,7 +291,7 @@ export class HingeBatch {
   }
 
   /**
-   * Applies the kept impulses; as Joint.warmStartGuarded, a hinge whose warm start would throw a body
+   * Applies the kept impulses; as SolverJoint.warmStartGuarded, a hinge whose warm start would throw a body
    * past `speedLimit` or `turnLimit` leaves the velocities as they were and forgets its impulse.
    */
   warmStart(state: Float64Array, speedLimit: number, turnLimit: number): void {

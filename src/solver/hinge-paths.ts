@@ -1,9 +1,9 @@
 import { growF64, growI32 } from '../core/grow';
 import { IndexBound } from '../core/index-bound';
-import type { Joint } from '../joints/joint';
 import { S } from '../store/body-store';
 import { Anchor, H, turnStepData, writeStepData } from './hinge-batch';
 import type { JointContext } from './joint-context';
+import type { SolverJoint } from './solver-joint';
 
 /**
  * Layout of one hinge of a path in `HingePaths.data` (doubles): the hinge batch's step data (H.MA ..
@@ -53,7 +53,7 @@ export enum P {
 /** @internal */
 export class HingePaths {
   /** the hinges, path after path, each path from one end to the other */
-  readonly joints: Joint[] = [];
+  readonly joints: SolverJoint[] = [];
   count = 0;
   /** the fastest the hinges' position correction may pull (see JointTree's pushLimit) */
   pushLimit = 0;
@@ -76,7 +76,7 @@ export class HingePaths {
   /** set by prepare: the first factorization of this step is the last one of the step before */
   private startFactored = false;
   /** the hinges before the last clear, and whether add() laid them again in the same places */
-  private readonly previous: Joint[] = [];
+  private readonly previous: SolverJoint[] = [];
   private sameLayout = false;
 
   /** Empties the list (before a build adds the paths anew). */
@@ -92,7 +92,7 @@ export class HingePaths {
    * Appends `joint` to the current path, or starts a new path with it (`startsPath`); `forward` when
    * its body A is the one before it on the path.
    */
-  add(joint: Joint, startsPath: boolean, forward: boolean): void {
+  add(joint: SolverJoint, startsPath: boolean, forward: boolean): void {
     const k = this.count;
     if (this.ids.length < 2 * (k + 1)) {
       const cap = Math.max(16, 2 * (k + 1));
@@ -110,8 +110,8 @@ export class HingePaths {
     ) {
       this.sameLayout = false;
     }
-    const a = joint.bodyA.slot;
-    const b = joint.bodyB.slot;
+    const a = joint.slotA;
+    const b = joint.slotB;
     this.ids[2 * k] = forward ? a : b;
     this.ids[2 * k + 1] = forward ? b : a;
     const o = k * Anchor.STRIDE;

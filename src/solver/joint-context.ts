@@ -1,4 +1,3 @@
-import type { JointTree } from './joint-tree';
 import type { Softness } from './softness';
 
 /** @internal What every joint needs from the step: the body columns and the substep's constants. */
@@ -34,7 +33,22 @@ export interface JointContext {
   /** softness of rigid joints' position correction */
   jointSoftness: Softness;
   /** the exact solver of tree-shaped joints (closures apply their impulses through it) */
-  tree: JointTree;
+  tree: TreeForJoints;
   /** the world's pose epoch at this step (WorldCore.poseEpoch: data carried over holds while it does) */
   poseEpoch: number;
+}
+
+/**
+ * @internal What joints call on the JointTree (solver/joint-tree.ts, which implements it) while it
+ * solves them: named here so that joints and the context do not depend on the tree's module.
+ */
+export interface TreeForJoints {
+  /** while set, the limits the tree holds stay as chosen (see Joint.fillLimitRow) */
+  readonly keepLimits: boolean;
+  /** records that row `row` of tree joint `j` is a limit the tree holds */
+  markLimitRow(j: number, row: number): void;
+  /** a closure's point impulse, in and out of applyClosure */
+  readonly closureImpulse: Float64Array;
+  /** applies `closureImpulse` of closure `c` through the tree to the bodies' velocities in `state` */
+  applyClosure(c: number, state: Float64Array): void;
 }

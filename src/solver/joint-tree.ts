@@ -1,8 +1,8 @@
 import { growF64, growI32, growU8 } from '../core/grow';
-import type { Joint } from '../joints/joint';
 import { BodyKind, S } from '../store/body-store';
 import { HingePaths } from './hinge-paths';
 import type { JointContext } from './joint-context';
+import type { SolverJoint } from './solver-joint';
 import { TreeAxials, type TreeSolve } from './tree-axials';
 
 /*
@@ -66,12 +66,12 @@ enum NodeKind {
 /** @internal */
 export class JointTree implements TreeSolve {
   /** the joints solved here this step by the body-and-joint tree, in creation order */
-  readonly joints: Joint[] = [];
+  readonly joints: SolverJoint[] = [];
   jointCount = 0;
   /** the tree joints of clusters that are paths of free hinges, solved along their paths */
   readonly paths = new HingePaths();
   /** the active joints with rows for the iterative solver (not in the tree, or with axial rows) */
-  readonly iterative: Joint[] = [];
+  readonly iterative: SolverJoint[] = [];
   /** per tree joint: its bodies' slots */
   private slotA = new Int32Array(16);
   private slotB = new Int32Array(16);
@@ -99,7 +99,7 @@ export class JointTree implements TreeSolve {
   private correctionLimit = new Float64Array(16 * 3);
   /** per tree row: the error stabilize leaves to the velocity bias (see there); 0 for a limit's */
   private correctionSlop = new Float64Array(16 * 3);
-  /** per tree row: 1 for a limit's row (Joint.fillLimitRow) */
+  /** per tree row: 1 for a limit's row (SolverJoint.fillLimitRow) */
   private limitRow = new Uint8Array(16 * 3);
 
   /**
@@ -109,7 +109,7 @@ export class JointTree implements TreeSolve {
    * it. Without this the joint that closes the loop carries the load with the stiffness of its own
    * two bodies.
    */
-  readonly closures: Joint[] = [];
+  readonly closures: SolverJoint[] = [];
   private closureNodeA = new Int32Array(MAX_CLOSURES);
   private closureNodeB = new Int32Array(MAX_CLOSURES);
   private closureJA = new Float64Array(MAX_CLOSURES * 9);
@@ -183,7 +183,7 @@ export class JointTree implements TreeSolve {
    * the others false. Returns false when the last choice still holds and nothing was redone.
    */
   build(
-    active: readonly Joint[],
+    active: readonly SolverJoint[],
     relisted: boolean,
     kind: Uint8Array,
     invMass: Float64Array,
@@ -214,8 +214,8 @@ export class JointTree implements TreeSolve {
     for (let n = 0; n < this.nodeCount; n++)
       if (this.nodeKind[n] === NodeKind.BODY) this.bodyNode[this.nodeBody[n]] = -1;
     for (const joint of this.paths.joints) {
-      this.pathBody[joint.bodyA.slot] = 0;
-      this.pathBody[joint.bodyB.slot] = 0;
+      this.pathBody[joint.slotA] = 0;
+      this.pathBody[joint.slotB] = 0;
     }
     this.nodeCount = 0;
     this.joints.length = 0;
@@ -224,8 +224,8 @@ export class JointTree implements TreeSolve {
     let ground = -1;
     for (let j = 0; j < active.length && ground === -1; j++) {
       const joint = active[j];
-      if (kind[joint.bodyA.slot] !== BodyKind.DYNAMIC) ground = joint.bodyA.slot;
-      else if (kind[joint.bodyB.slot] !== BodyKind.DYNAMIC) ground = joint.bodyB.slot;
+      if (kind[joint.slotA] !== BodyKind.DYNAMIC) ground = joint.slotA;
+      else if (kind[joint.slotB] !== BodyKind.DYNAMIC) ground = joint.slotB;
     }
     if (this.activeA.length < active.length) {
       const cap = Math.max(2 * this.activeA.length, active.length);
@@ -240,8 +240,8 @@ export class JointTree implements TreeSolve {
       joint.closure = false;
       joint.axialEntry0 = -1;
       joint.axialEntry1 = -1;
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+      const a = joint.slotA;
+      const b = joint.slotB;
       this.activeA[j] = a;
       this.activeB[j] = b;
       this.activeEligible[j] = eligible(joint, a, b, kind, invMass, invInertia) ? 1 : 0;
@@ -290,8 +290,8 @@ export class JointTree implements TreeSolve {
     }
     for (let c = 0; c < this.closures.length; c++) {
       this.closures[c].closureIndex = c;
-      this.closureNodeA[c] = this.bodyNode[this.closures[c].bodyA.slot];
-      this.closureNodeB[c] = this.bodyNode[this.closures[c].bodyB.slot];
+      this.closureNodeA[c] = this.bodyNode[this.closures[c].slotA];
+      this.closureNodeB[c] = this.bodyNode[this.closures[c].slotB];
     }
     return true;
   }
@@ -310,8 +310,8 @@ export class JointTree implements TreeSolve {
     this.paths.clear();
     for (let t = 0; t < count; t++) {
       const joint = joints[t];
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+      const a = joint.slotA;
+      const b = joint.slotB;
       const r = this.findCluster(kind[a] === BodyKind.DYNAMIC ? a : b);
       if (!joint.isFreeHinge()) pathOk[r] = 0;
       for (let side = 0; side < 2; side++) {
@@ -323,8 +323,8 @@ export class JointTree implements TreeSolve {
       }
     }
     for (const joint of this.closures) {
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+      const a = joint.slotA;
+      const b = joint.slotB;
       pathOk[this.findCluster(kind[a] === BodyKind.DYNAMIC ? a : b)] = 0;
     }
     if (this.placed.length < count) this.placed = new Uint8Array(Math.max(2 * this.placed.length, count));
@@ -332,8 +332,8 @@ export class JointTree implements TreeSolve {
     placed.fill(0, 0, count);
     for (let t = 0; t < count; t++) {
       const joint = joints[t];
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+      const a = joint.slotA;
+      const b = joint.slotB;
       if (placed[t] !== 0 || pathOk[this.findCluster(kind[a] === BodyKind.DYNAMIC ? a : b)] === 0) continue;
       // an end of its path: the body before it is the ground or on no other hinge
       let before: number;
@@ -346,10 +346,10 @@ export class JointTree implements TreeSolve {
       for (;;) {
         const hinge = joints[k];
         placed[k] = 1;
-        const forward = hinge.bodyA.slot === before;
+        const forward = hinge.slotA === before;
         this.paths.add(hinge, start, forward);
         start = false;
-        const after = forward ? hinge.bodyB.slot : hinge.bodyA.slot;
+        const after = forward ? hinge.slotB : hinge.slotA;
         if (kind[after] !== BodyKind.DYNAMIC) break;
         this.pathBody[after] = 1;
         const next = at0[after] === k ? at1[after] : at0[after];
@@ -367,9 +367,14 @@ export class JointTree implements TreeSolve {
   /** the joint epoch, body capacity and active joints of the last build */
   private builtEpoch = -1;
   private builtBodyCapacity = -1;
-  private readonly builtActive: Joint[] = [];
+  private readonly builtActive: SolverJoint[] = [];
 
-  private isBuilt(active: readonly Joint[], relisted: boolean, bodyCapacity: number, epoch: number): boolean {
+  private isBuilt(
+    active: readonly SolverJoint[],
+    relisted: boolean,
+    bodyCapacity: number,
+    epoch: number,
+  ): boolean {
     if (epoch !== this.builtEpoch || bodyCapacity !== this.builtBodyCapacity) return false;
     if (!relisted) return true;
     const built = this.builtActive;
@@ -528,8 +533,8 @@ export class JointTree implements TreeSolve {
       const rows = joint.treeRows();
       this.rows[j] = rows;
       this.warmed[j] = joint.iteratesInTree() ? 1 : 0;
-      const a = joint.bodyA.slot;
-      const b = joint.bodyB.slot;
+      const a = joint.slotA;
+      const b = joint.slotB;
       this.slotA[j] = a;
       this.slotB[j] = b;
       let nodeA = -1;
@@ -631,7 +636,7 @@ export class JointTree implements TreeSolve {
     }
     for (let j = 0; j < this.iterative.length; j++) {
       const joint = this.iterative[j];
-      if (this.solvesBody(joint.bodyA.slot) || this.solvesBody(joint.bodyB.slot)) return true;
+      if (this.solvesBody(joint.slotA) || this.solvesBody(joint.slotB)) return true;
     }
     return false;
   }
@@ -688,7 +693,7 @@ export class JointTree implements TreeSolve {
     this.limitRow.fill(0, 0, 3 * count);
     for (let j = 0; j < count; j++) {
       const rows = this.joints[j].treeFill(ctx, jA, jB, this.err, j, true);
-      // a limit the tree holds this substep is one more row (Joint.fillLimitRow)
+      // a limit the tree holds this substep is one more row (SolverJoint.fillLimitRow)
       if (rows !== this.rows[j]) {
         this.rows[j] = rows;
         this.nodeDim[this.rowNode[j]] = this.rowOffset[j] + rows;
@@ -800,12 +805,12 @@ export class JointTree implements TreeSolve {
   }
 
   /**
-   * @internal while set, the joints keep the limits they hold (Joint.fillLimitRow): a second
+   * @internal while set, the joints keep the limits they hold (SolverJoint.fillLimitRow): a second
    * factorization within a substep (see restabilize) must hold the same rows as the first
    */
   keepLimits = false;
 
-  /** @internal Marks row `row` of tree joint `j` as a limit's (Joint.fillLimitRow). */
+  /** @internal Marks row `row` of tree joint `j` as a limit's (SolverJoint.fillLimitRow). */
   markLimitRow(j: number, row: number): void {
     this.limitRow[3 * j + row] = 1;
   }
@@ -1034,7 +1039,7 @@ export class JointTree implements TreeSolve {
       const vBx = state[sb + S.VX];
       const vBy = state[sb + S.VY];
       const wB = state[sb + S.W];
-      // three rows each: a joint with fewer has zero rows after its own (see Joint.clearTreeRows)
+      // three rows each: a joint with fewer has zero rows after its own (see SolverJoint.clearTreeRows)
       const o = Block.ROWS * this.rowNode[j] + this.rowOffset[j];
       const m = 9 * j;
       const e = 3 * j;
@@ -1144,7 +1149,7 @@ function permute(a: Int32Array, rank: Int32Array, tmp: Int32Array, count: number
 
 /** Whether the joint has rows for the tree and bodies the tree can take (dynamic ones must turn). */
 function eligible(
-  joint: Joint,
+  joint: SolverJoint,
   a: number,
   b: number,
   kind: Uint8Array,

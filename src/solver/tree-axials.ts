@@ -1,7 +1,7 @@
 import { growF64, growI32 } from '../core/grow';
-import type { Joint } from '../joints/joint';
 import { S } from '../store/body-store';
 import type { JointContext } from './joint-context';
+import type { SolverJoint } from './solver-joint';
 
 /** the most axial rows solved together through the tree (their coupling matrix is square in it) */
 const MAX_ENTRIES = 64;
@@ -46,7 +46,7 @@ export interface TreeSolve {
  */
 export class TreeAxials {
   /** per entry: its joint and which of the joint's axial rows (0 or 1) */
-  readonly joints: Joint[] = [];
+  readonly joints: SolverJoint[] = [];
   private row = new Int32Array(16);
   private nodeA = new Int32Array(16);
   private nodeB = new Int32Array(16);
@@ -73,7 +73,7 @@ export class TreeAxials {
    * WORK allow, given each joint's bodies' nodes; sets the joints' axialEntry0/1. The rows left out
    * are solved by their joints with their bodies' own masses.
    */
-  list(joints: readonly Joint[], count: number, nodeCount: number, bodyNode: Int32Array): void {
+  list(joints: readonly SolverJoint[], count: number, nodeCount: number, bodyNode: Int32Array): void {
     this.joints.length = 0;
     const limit = Math.min(MAX_ENTRIES, nodeCount > 0 ? Math.floor(WORK / nodeCount) : 0);
     let n = 0;
@@ -85,10 +85,10 @@ export class TreeAxials {
         this.ensureCapacity(n + 1);
         this.joints.push(joint);
         this.row[n] = row;
-        this.slotA[n] = joint.bodyA.slot;
-        this.slotB[n] = joint.bodyB.slot;
-        this.nodeA[n] = bodyNode[joint.bodyA.slot];
-        this.nodeB[n] = bodyNode[joint.bodyB.slot];
+        this.slotA[n] = joint.slotA;
+        this.slotB[n] = joint.slotB;
+        this.nodeA[n] = bodyNode[joint.slotA];
+        this.nodeB[n] = bodyNode[joint.slotB];
         if (row === 0) joint.axialEntry0 = n;
         else joint.axialEntry1 = n;
         n++;
@@ -164,7 +164,7 @@ export class TreeAxials {
 
   /**
    * One pass over the entries: projected Gauss-Seidel on the coupling matrix (each joint solves its
-   * rows of an entry given the entry's speed and mass: Joint.solveAxial), then the impulses applied
+   * rows of an entry given the entry's speed and mass: SolverJoint.solveAxial), then the impulses applied
    * to the bodies and carried over the tree by a projection (`useBias`: with the tree's bias).
    */
   solve(ctx: JointContext, tree: TreeSolve, useBias: boolean): void {

@@ -1,9 +1,23 @@
 import { type BroadPhase, type PairAdmission, ProxyType, SearchMode } from '../broad-phase/broad-phase';
 import { IntList } from '../broad-phase/int-list';
 import { growF64, growI32, growU8 } from '../core/grow';
+import type { Settings } from '../core/settings';
+import type { BodyStore } from '../store/body-store';
 import { BodyFlag, BodyKind } from '../store/body-store';
 import { ContactFlag, type ContactStore } from '../store/contact-store';
-import type { WorldCore } from './world-core';
+import type { ShapeStore } from '../store/shape-store';
+
+/**
+ * What the limiter reads and does in its world (WorldCore implements it): named here so that the
+ * limiter does not depend on the module of the world that owns it.
+ */
+interface LimiterWorld {
+  readonly shapes: ShapeStore;
+  readonly bodies: BodyStore;
+  readonly contacts: ContactStore;
+  readonly settings: Settings;
+  destroyContact(c: number, events: boolean): void;
+}
 
 /** The default of `world.maxContactsPerShape`. An enum for the reason in store/body-store.ts. */
 enum ContactLimit {
@@ -98,7 +112,7 @@ export class ContactLimiter implements PairAdmission {
   private apartGap = 0;
   private apartPartner = 0;
 
-  constructor(private readonly core: WorldCore) {}
+  constructor(private readonly core: LimiterWorld) {}
 
   get anyWaiting(): boolean {
     return this.waiting.length > 0;

@@ -7,7 +7,6 @@ import {
   JOINT_HERTZ,
   MAX_ROTATION_PER_SUBSTEP,
 } from '../core/settings';
-import type { Joint } from '../joints/joint';
 import {
   clampVelocity,
   integratePositions,
@@ -31,6 +30,7 @@ import {
 import { MAX_FINE_FACTOR } from '../solver/fine-islands';
 import type { GraphColoring } from '../solver/graph-color';
 import { makeSoftness, type Softness } from '../solver/softness';
+import type { SolverJoint } from '../solver/solver-joint';
 import { BodyFlag, BodyKind, type BodyStore, S } from '../store/body-store';
 import { ContactFlag, type ContactStore } from '../store/contact-store';
 import { ShapeFlag } from '../store/shape-store';
@@ -116,15 +116,12 @@ function prepareJoints(core: WorldCore, h: number): void {
 }
 
 /** Lists in `active` the joints that have an awake body, in creation order. */
-function listActiveJoints(joints: readonly Joint[], flags: Uint8Array, active: Joint[]): void {
+function listActiveJoints(joints: readonly SolverJoint[], flags: Uint8Array, active: SolverJoint[]): void {
   // overwritten in place: `length = 0` would free the array's storage every step and the pushes grow
   // it anew (only a list that shrinks by half or more is trimmed)
   let count = 0;
   for (const joint of joints) {
-    if (
-      (flags[joint.bodyA.slot] & BodyFlag.AWAKE) === 0 &&
-      (flags[joint.bodyB.slot] & BodyFlag.AWAKE) === 0
-    ) {
+    if ((flags[joint.slotA] & BodyFlag.AWAKE) === 0 && (flags[joint.slotB] & BodyFlag.AWAKE) === 0) {
       continue;
     }
     active[count++] = joint;
@@ -483,8 +480,8 @@ export function updateSleep(core: WorldCore): void {
     if (kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) islands.union(a, b);
   }
   for (const joint of core.activeJoints) {
-    const a = joint.bodyA.slot;
-    const b = joint.bodyB.slot;
+    const a = joint.slotA;
+    const b = joint.slotB;
     if (a !== b && kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) islands.union(a, b);
   }
   islands.sleepIslands(bodies, core.awake, core.awakeCount);

@@ -13,7 +13,6 @@ import { centroidExtent, maxExtentFrom, minExtent } from '../geometry/extent';
 import { computeMass } from '../geometry/mass';
 import { Pack } from '../geometry/packed';
 import type { Manifold, ManifoldPoint, MassData } from '../geometry/types';
-import type { Joint } from '../joints/joint';
 import type { Bounds } from '../math/aabb';
 import { makeBounds } from '../math/aabb';
 import type { Transform } from '../math/vec2';
@@ -25,6 +24,7 @@ import { HingeBatch } from '../solver/hinge-batch';
 import { Islands } from '../solver/island';
 import type { JointContext } from '../solver/joint-context';
 import { JointTree } from '../solver/joint-tree';
+import type { SolverJoint } from '../solver/solver-joint';
 import { BodyFlag, BodyKind, BodyStore } from '../store/body-store';
 import { ContactFlag, ContactStore } from '../store/contact-store';
 import { EventBuffers } from '../store/event-buffers';
@@ -109,10 +109,10 @@ export class WorldCore implements PairFilter {
   hitEventThreshold = 1;
   locked = false;
   /** joints in creation order, and each body's joints */
-  readonly joints: Joint[] = [];
-  readonly bodyJoints: (Joint[] | undefined)[] = [];
+  readonly joints: SolverJoint[] = [];
+  readonly bodyJoints: (SolverJoint[] | undefined)[] = [];
   /** joints solved in the current step and what they read */
-  readonly activeJoints: Joint[] = [];
+  readonly activeJoints: SolverJoint[] = [];
   /** counts joints made and destroyed */
   jointListEpoch = 0;
   /**
@@ -387,8 +387,8 @@ export class WorldCore implements PairFilter {
     const list = ja.length <= jb.length ? ja : jb;
     for (const j of list) {
       if (j.collideConnected) continue;
-      const a = j.bodyA.slot;
-      const b = j.bodyB.slot;
+      const a = j.slotA;
+      const b = j.slotB;
       if ((a === bodyA && b === bodyB) || (a === bodyB && b === bodyA)) return false;
     }
     return true;

@@ -1,0 +1,73 @@
+import { FulcrumError } from '../core/errors';
+import { ShapeKind } from '../geometry/types';
+import { BodyFlag, BodyKind, S } from '../store/body-store';
+import { ContactFlag } from '../store/contact-store';
+import type { WorldCore } from './world-core';
+
+/*
+ * Changes to a world between steps that reach across its stores (bodies, shapes, contacts, islands,
+ * proxies); the public handles call them with slots.
+ */
+
+/**
+ * Gives body `b` the kind `kind` (`type` is the name the caller gave, for the error): its contacts and
+ * proxies are made anew, as a body of another kind has other pairs and lives in another tree.
+ */
+export function changeBodyKind(core: WorldCore, b: number, kind: BodyKind, type: string): void {
+  const bodies = core.bodies;
+  if (bodies.kind[b] === kind) return;
+  const shapes = core.shapes;
+  if (kind === BodyKind.DYNAMIC) {
+    for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
+      if (shapes.kind[s] === ShapeKind.SEGMENT) {
+        throw new FulcrumError(
+          `type: a body with a segment shape cannot be 'dynamic', got ${JSON.stringify(type)}`,
+        );
+      }
+    }
+  }
+  core.wakeTouching(b);
+  core.islands.remove(bodies, b);
+  for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
+    core.destroyShapeContacts(s, true, true);
+    core.destroyProxy(s);
+  }
+  bodies.kind[b] = kind;
+  bodies.awakeEpoch++;
+  if (kind === BodyKind.STATIC) {
+    bodies.flags[b] &= ~BodyFlag.AWAKE;
+    const st = b * S.STRIDE;
+    bodies.state[st + S.VX] = 0;
+    bodies.state[st + S.VY] = 0;
+    bodies.state[st + S.W] = 0;
+  } else {
+    bodies.flags[b] |= BodyFlag.AWAKE;
+    bodies.sleepTime[b] = 0;
+  }
+  core.updateMass(b);
+  for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) core.createProxy(s, true);
+}
+
+/** Puts body `b` and every body it touches (transitively) to sleep as one island. */
+export function sleepIsland(core: WorldCore, b: number): void {
+  const bodies = core.bodies;
+  if (bodies.kind[b] === BodyKind.STATIC) return;
+  core.wake(b); // leave any island it was in, so the new island is complete
+  const contacts = core.contacts;
+  const members: number[] = [b];
+  const seen = new Set<number>(members);
+  for (let i = 0; i < members.length; i++) {
+    const x = members[i];
+    for (let e = bodies.contactHead[x]; e !== -1; e = contacts.edgeNext[e]) {
+      const c = e >> 1;
+      if ((contacts.flags[c] & ContactFlag.TOUCHING) === 0) continue;
+      const other = contacts.bodyA[c] === x ? contacts.bodyB[c] : contacts.bodyA[c];
+      if (bodies.kind[other] !== BodyKind.DYNAMIC || seen.has(other)) continue;
+      seen.add(other);
+      core.wake(other);
+      members.push(other);
+    }
+  }
+  members.sort((p, q) => p - q);
+  core.islands.sleepGroup(bodies, members);
+}
