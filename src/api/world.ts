@@ -46,8 +46,7 @@ import type { CastHit, QueryFilter, QueryTransform } from '../query/index';
 import * as queries from '../query/index';
 import { BodyFlag, BodyKind, S } from '../store/body-store';
 import { ContactFlag } from '../store/contact-store';
-import { collectAwakeBodies, finalizeBodies, solve, updateSleep } from '../world/solve';
-import { createNewContacts, updateContacts } from '../world/update-contacts';
+import { stepWorld } from '../world/step';
 import { WorldCore } from '../world/world-core';
 import { sleepIsland } from '../world/world-edits';
 import { BODY_DEF_KEYS, BODY_KINDS, BODY_TYPES, Body, type BodyDef, type BodyType } from './body';
@@ -375,21 +374,7 @@ export class World {
     checkZeroOrRange('dt', dt, Limits.MIN_DT, Limits.MAX_DT);
     const core = this.core;
     this.handles.dispatcher.emitStep('preStep', dt);
-    core.locked = true;
-    core.events.clear();
-    core.events.takePending(core.shapes);
-    try {
-      createNewContacts(core);
-      updateContacts(core);
-      if (dt > 0) {
-        collectAwakeBodies(core);
-        solve(core, dt);
-        finalizeBodies(core, dt);
-        if (core.enableSleep) updateSleep(core);
-      }
-    } finally {
-      core.locked = false;
-    }
+    stepWorld(core, dt);
     this.handles.dispatcher.deliver();
     this.handles.dispatcher.emitStep('postStep', dt);
   }

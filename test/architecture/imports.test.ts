@@ -238,4 +238,13 @@ describe('the import graph of src/', () => {
     );
     expect(planted).toEqual([['a', 'b']]);
   });
+
+  it('is mapped in src/README.md: a row for each folder, and every file it names exists', () => {
+    const map = readFileSync(join(SRC, 'README.md'), 'utf8');
+    const rows = [...map.matchAll(/^\| `([a-z-]+)\/` *\|/gm)].map((m) => m[1]);
+    expect(rows.sort()).toEqual(Object.keys(LAYERS).sort());
+    const named = new Set([...map.matchAll(/`([a-z-]+(?:\/[a-z-]+)?\.ts)`/g)].map((m) => m[1]));
+    const missing = [...named].filter((name) => !files.some((f) => f === name || f.endsWith(`/${name}`)));
+    expect(missing).toEqual([]);
+  });
 });
