@@ -379,7 +379,7 @@ export class World {
     this.handles.dispatcher.emitStep('postStep', dt);
   }
 
-  // Queries (issue 4): rules and orders are documented in src/query/*.ts
+  // Queries: their rules and orders are documented in src/query/*.ts
 
   /** The closest shape hit by origin + f * translation (f in [0, 1]), or null. Skips sensors by default. */
   castRay(origin: Vec2, translation: Vec2, filter?: QueryFilter): CastHit | null {
