@@ -8,13 +8,14 @@ import {
   checkVector,
   Limits,
 } from '../core/limits';
+import { localScale, scaleGeometry } from '../geometry/scale-geometry';
 import type { Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
 import { makeRotInto, rotAngle } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
 import { BodyFlag, BodyKind, S } from '../store/body-store';
 import type { WorldCore } from '../world/world-core';
-import { changeBodyKind, sleepIsland } from '../world/world-edits';
+import { changeBodyKind, replaceShapeGeometry, sleepIsland } from '../world/world-edits';
 import type { WorldHandles } from './handles';
 import { attachShape, detachShape, type ShapeDef, type ShapeHandle } from './shape';
 import type { World } from './world';
@@ -59,6 +60,19 @@ export const BODY_KINDS = {
   kinematic: BodyKind.KINEMATIC,
   dynamic: BodyKind.DYNAMIC,
 } as const;
+
+/** A scale factor: finite, not 0, at most Limits.COORDINATE in size (a negative one mirrors). */
+function checkScaleFactor(argument: string, value: unknown, given: unknown): number {
+  if (
+    typeof value !== 'number' ||
+    !Number.isFinite(value) ||
+    value === 0 ||
+    Math.abs(value) > Limits.COORDINATE
+  ) {
+    fail(argument, given, `a non-zero number or { x, y } of them, at most ${Limits.COORDINATE} in size`);
+  }
+  return value;
+}
 
 const rotScratch = { c: 1, s: 0 };
 
@@ -228,6 +242,39 @@ export class Body {
     bodies.py[b] = p.y;
     bodies.qc[b] = rotScratch.c;
     bodies.qs[b] = rotScratch.s;
+    this.moved(b);
+  }
+
+  /**
+   * Scales the body's shapes by `factor` (one number, or `{ x, y }` along the world's axes) about the
+   * world `point` (default: the centre of mass), which stays where it is; the body's origin moves
+   * with the scale. Mass, centre of mass and inertia follow from the scaled shapes (mass scales with
+   * area); velocities are kept. Circles, capsules and rounded polygons take one factor only. The
+   * shapes' contacts end (touching ones report their ends) and are found again in the next step.
+   * Nothing changes when any shape cannot take the scale.
+   */
+  scale(factor: number | Vec2, point?: Vec2): void {
+    const b = this.unlocked();
+    const sx = checkScaleFactor('factor', typeof factor === 'number' ? factor : factor?.x, factor);
+    const sy = typeof factor === 'number' ? sx : checkScaleFactor('factor', factor.y, factor);
+    const core = this.core;
+    const bodies = core.bodies;
+    const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkCoordinates('point', point);
+    const origin = checkCoordinates('factor', {
+      x: p.x + sx * (bodies.px[b] - p.x),
+      y: p.y + sy * (bodies.py[b] - p.y),
+    });
+    // every new geometry first: one that fails leaves the body as it was
+    const m = localScale(sx, sy, bodies.qc[b], bodies.qs[b]);
+    const shapes = this.shapes;
+    const scaled = shapes.map((shape) => scaleGeometry(shape.geometry, m, 'factor'));
+    for (let i = 0; i < shapes.length; i++) {
+      replaceShapeGeometry(core, shapes[i].slot, scaled[i]);
+      shapes[i].current = scaled[i];
+    }
+    bodies.px[b] = origin.x;
+    bodies.py[b] = origin.y;
+    core.updateMass(b);
     this.moved(b);
   }
 

@@ -9,6 +9,7 @@ import type { AABB } from '../math/aabb';
 import { makeTransform, type Vec2 } from '../math/vec2';
 import { BodyKind } from '../store/body-store';
 import { ShapeFlag } from '../store/shape-store';
+import { replaceShapeGeometry } from '../world/world-edits';
 import type { Body } from './body';
 import type { WorldHandles } from './handles';
 
@@ -126,16 +127,22 @@ export class ShapeHandle {
   /** @internal */
   readonly generation: number;
   readonly body: Body;
-  readonly geometry: Geometry;
   userData: unknown;
+  /** @internal the geometry, until setGeometry replaces it */
+  current: Geometry;
 
   /** @internal created by Body.createShape */
   constructor(body: Body, slot: number, generation: number, geometry: Geometry, userData: unknown) {
     this.body = body;
     this.slot = slot;
     this.generation = generation;
-    this.geometry = geometry;
+    this.current = geometry;
     this.userData = userData;
+  }
+
+  /** The shape's geometry in its body's frame (immutable; setGeometry gives the shape another). */
+  get geometry(): Geometry {
+    return this.current;
   }
 
   /** @internal */
@@ -159,7 +166,7 @@ export class ShapeHandle {
 
   get type(): Geometry['type'] {
     this.check();
-    return this.geometry.type;
+    return this.current.type;
   }
 
   get friction(): number {
@@ -247,6 +254,22 @@ export class ShapeHandle {
     else shapes.flags[s] &= ~ShapeFlag.HIT_EVENTS;
   }
 
+  /**
+   * Gives the shape another geometry, e.g. new polygon points: `shape.setGeometry(Shape.polygon(points))`.
+   * The body's mass, centre of mass and inertia follow at once; the shape's contacts end (touching
+   * ones report their ends) and are found again from the new outline in the next step.
+   */
+  setGeometry(geometry: Geometry): void {
+    const s = this.unlocked();
+    const core = this.body.core;
+    const b = core.shapes.body[s];
+    checkGeometryFor(core.bodies.kind[b], geometry);
+    replaceShapeGeometry(core, s, geometry);
+    this.current = geometry;
+    core.updateMass(b);
+    core.wake(b);
+  }
+
   private resetContacts(s: number): void {
     const core = this.body.core;
     core.destroyShapeContacts(s, true, true);
@@ -267,7 +290,7 @@ export class ShapeHandle {
     const s = this.check();
     const p = checkCoordinates('point', point);
     const core = this.body.core;
-    return testPoint(this.geometry, core.fillTransform(core.shapes.body[s], xf), p.x, p.y);
+    return testPoint(this.current, core.fillTransform(core.shapes.body[s], xf), p.x, p.y);
   }
 
   /** Ray from `origin` along `translation`; null when it misses (see geometry/raycast.ts for the rules). */
@@ -277,12 +300,21 @@ export class ShapeHandle {
     const t = checkCoordinates('translation', translation);
     const core = this.body.core;
     core.fillTransform(core.shapes.body[s], xf);
-    if (!rayCastGeometry(this.geometry, xf, o.x, o.y, t.x, t.y, hit)) return null;
+    if (!rayCastGeometry(this.current, xf, o.x, o.y, t.x, t.y, hit)) return null;
     return {
       point: { x: hit.pointX, y: hit.pointY },
       normal: { x: hit.normalX, y: hit.normalY },
       fraction: hit.fraction,
     };
+  }
+}
+
+/** @internal Throws unless `geometry` is a geometry a body of kind `kind` can hold. */
+export function checkGeometryFor(kind: BodyKind, geometry: unknown): asserts geometry is Geometry {
+  if (!isGeometry(geometry))
+    fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment');
+  if (geometry.kind === ShapeKind.SEGMENT && kind === BodyKind.DYNAMIC) {
+    throw new FulcrumError('geometry: a segment can only be attached to a static or kinematic body');
   }
 }
 
@@ -294,12 +326,8 @@ export function attachShape(
   def: ShapeDef | undefined,
 ): ShapeHandle {
   const b = body.check();
-  if (!isGeometry(geometry))
-    fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment');
   const core = handles.core;
-  if (geometry.kind === ShapeKind.SEGMENT && core.bodies.kind[b] === BodyKind.DYNAMIC) {
-    throw new FulcrumError('geometry: a segment can only be attached to a static or kinematic body');
-  }
+  checkGeometryFor(core.bodies.kind[b], geometry);
   const d = resolveShapeDef(def);
   const shapes = core.shapes;
   checkRoom('shapes', shapes.liveCount);

@@ -1,7 +1,8 @@
 import { growF64, growI32, growU8, growU32 } from '../core/grow';
 import { SlotStore } from '../core/slot-store';
-import { Pack } from '../geometry/packed';
-import type { Geometry } from '../geometry/types';
+import { maxExtentFrom } from '../geometry/extent';
+import { Pack, packGeometry } from '../geometry/packed';
+import { type Geometry, ShapeKind } from '../geometry/types';
 
 export enum ShapeFlag {
   SENSOR = 1,
@@ -40,6 +41,15 @@ export class ShapeStore extends SlotStore {
   geometry: (Geometry | undefined)[] = [];
   /** each shape's geometry packed (see packed.ts), Pack.STRIDE doubles per slot */
   packed = new Float64Array(0);
+
+  /** Writes the columns that follow from shape `s`'s geometry (its proxy and mass are the caller's). */
+  setGeometry(s: number, geometry: Geometry): void {
+    this.geometry[s] = geometry;
+    packGeometry(geometry, this.packed, s * Pack.STRIDE);
+    this.kind[s] = geometry.kind;
+    this.radius[s] = geometry.kind === ShapeKind.SEGMENT ? 0 : geometry.radius;
+    this.originExtent[s] = maxExtentFrom(geometry, 0, 0);
+  }
 
   protected growColumns(capacity: number): void {
     this.body = growI32(this.body, capacity);

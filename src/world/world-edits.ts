@@ -1,5 +1,5 @@
 import { FulcrumError } from '../core/errors';
-import { ShapeKind } from '../geometry/types';
+import { type Geometry, ShapeKind } from '../geometry/types';
 import { BodyFlag, BodyKind, S } from '../store/body-store';
 import { ContactFlag } from '../store/contact-store';
 import type { WorldCore } from './world-core';
@@ -70,4 +70,16 @@ export function sleepIsland(core: WorldCore, b: number): void {
   }
   members.sort((p, q) => p - q);
   core.islands.sleepGroup(bodies, members);
+}
+
+/**
+ * Gives shape `s` a new geometry: its contacts end (the touching ones report their ends) and are
+ * found anew from its new proxy next step. The body's mass is the caller's to update, once for all
+ * the shapes it changes.
+ */
+export function replaceShapeGeometry(core: WorldCore, s: number, geometry: Geometry): void {
+  core.destroyShapeContacts(s, true, true);
+  core.destroyProxy(s);
+  core.shapes.setGeometry(s, geometry);
+  core.createProxy(s, true);
 }
