@@ -28,6 +28,7 @@ const guide: DefaultTheme.SidebarItem[] = [
     items: [
       { text: 'Bodies and shapes', link: '/guide/bodies-and-shapes' },
       { text: 'Compound bodies', link: '/guide/compound-bodies' },
+      { text: 'SVG paths', link: '/guide/svg-paths' },
       { text: 'Joints', link: '/guide/joints' },
       { text: 'Events', link: '/guide/events' },
       { text: 'Queries', link: '/guide/queries' },

@@ -65,6 +65,34 @@ describe('docs examples', () => {
     expect(hammer.worldCenter.y).toBeCloseTo(2 + (0 * 1 + 0.6 * 4) / 5, 12);
   });
 
+  it('SVG paths: the valley drawn in pixels lands upright in metres, the crate rests at its bottom', async () => {
+    const { box, crate, terrain } = await import('../../docs/examples/svg-path');
+    expect(terrain.closed).toBe(false);
+    expect(terrain.points[0]).toEqual({ x: 0, y: -2 });
+    expect(terrain.points[terrain.points.length - 1]).toEqual({ x: 8, y: -2 });
+    // the valley's floor: Q from (2, -2) by (4, -4) to (6, -2) is the parabola y = -3 + (x - 4)^2 / 4
+    for (const p of terrain.points) {
+      const y = p.x < 2 || p.x > 6 ? -2 : -3 + (p.x - 4) ** 2 / 4;
+      expect(p.y).toBeCloseTo(y, 12);
+    }
+    expect(crate).toEqual({
+      points: [
+        { x: -0.4, y: 0.2 },
+        { x: 0.4, y: 0.2 },
+        { x: 0.4, y: -0.2 },
+        { x: -0.4, y: -0.2 },
+      ],
+      closed: true,
+    });
+    // on the curve itself the crate's corners (x = 4 +- 0.4) would sit at -3 + 0.04 and its centre
+    // 0.2 higher; the chords lie above the curve by at most the tolerance (1 px = 0.02 m), and the
+    // contact margin (linear slop, 0.005 m) allows that much overlap
+    expect(box.position.x).toBeCloseTo(4, 2);
+    expect(box.position.y).toBeGreaterThanOrEqual(-2.76 - 0.005);
+    expect(box.position.y).toBeLessThanOrEqual(-2.76 + 0.02);
+    expect(box.isAwake).toBe(false);
+  });
+
   it('joints: the pendulum keeps its 1 m arm and the speed its fall gives it', async () => {
     const { arm, speed, bob } = await import('../../docs/examples/joints');
     expect(Math.abs(arm - 1)).toBeLessThan(1e-3);
