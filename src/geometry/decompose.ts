@@ -1,0 +1,408 @@
+import { FulcrumError, fail } from '../core/errors';
+import type { Vec2 } from '../math/vec2';
+import { LINEAR_SLOP } from './constants';
+import { MAX_OUTLINE_POINTS, MAX_POLYGON_VERTICES } from './types';
+
+const SLOP_SQ = LINEAR_SLOP * LINEAR_SLOP;
+
+/** A simple outline split into convex pieces. Both are counter-clockwise lists of the outline's points. */
+export interface Decomposition {
+  /** the cleaned outline: duplicate and collinear points removed, counter-clockwise */
+  outline: Vec2[];
+  /** convex pieces, each of 3 to MAX_POLYGON_VERTICES points of `outline` */
+  pieces: Vec2[][];
+}
+
+/**
+ * The outline being cleaned: coordinates, each point's index in the input (for messages) and the
+ * input points dropped between it and the next point kept.
+ */
+interface Outline {
+  x: number[];
+  y: number[];
+  index: number[];
+  dropped: number[][];
+}
+
+function at(o: Outline, i: number): string {
+  return `points[${o.index[i]}] (${o.x[i]}, ${o.y[i]})`;
+}
+
+/** Twice the signed area of triangle (a, b, c): > 0 when counter-clockwise. */
+function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): number {
+  return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+}
+
+function distanceSqToSegment(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
+  const ex = bx - ax;
+  const ey = by - ay;
+  const t = Math.min(1, Math.max(0, ((px - ax) * ex + (py - ay) * ey) / (ex * ex + ey * ey)));
+  const dx = ax + t * ex - px;
+  const dy = ay + t * ey - py;
+  return dx * dx + dy * dy;
+}
+
+/** Drops point i; the points dropped after it now come after the point before it. */
+function dropAt(o: Outline, i: number): void {
+  const before = i === 0 ? o.x.length - 1 : i - 1;
+  o.dropped[before].push(o.index[i], ...o.dropped[i]);
+  o.x.splice(i, 1);
+  o.y.splice(i, 1);
+  o.index.splice(i, 1);
+  o.dropped.splice(i, 1);
+}
+
+/** Drops each point closer than LINEAR_SLOP to the point kept before it, around the loop. */
+function dropRepeatedPoints(points: readonly Vec2[]): Outline {
+  const o: Outline = { x: [], y: [], index: [], dropped: [] };
+  for (let i = 0; i < points.length; i++) {
+    const p = points[i];
+    const k = o.x.length - 1;
+    if (k >= 0) {
+      const dx = p.x - o.x[k];
+      const dy = p.y - o.y[k];
+      if (dx * dx + dy * dy < SLOP_SQ) {
+        o.dropped[k].push(i);
+        continue;
+      }
+    }
+    o.x.push(p.x);
+    o.y.push(p.y);
+    o.index.push(i);
+    o.dropped.push([]);
+  }
+  // the loop closes: the last points may repeat the first
+  while (o.x.length > 1) {
+    const k = o.x.length - 1;
+    const dx = o.x[k] - o.x[0];
+    const dy = o.y[k] - o.y[0];
+    if (dx * dx + dy * dy >= SLOP_SQ) break;
+    dropAt(o, k);
+  }
+  return o;
+}
+
+/**
+ * Drops the points that lie within LINEAR_SLOP of the line through their neighbours (on either side)
+ * and between them, as long as every point dropped so far next to them stays within LINEAR_SLOP of
+ * the new edge: a gentle curve sampled finely loses points, but never drifts more than LINEAR_SLOP
+ * from any point given. A point within LINEAR_SLOP of that line but not between its neighbours is the
+ * tip of a spike of no width: the outline turns back on itself there, and that is an error. After a
+ * point is dropped the point before it is looked at again, until a whole turn drops nothing.
+ */
+function dropCollinearPoints(o: Outline, points: readonly Vec2[], argument: string): void {
+  let i = 0;
+  let unchanged = 0;
+  while (o.x.length >= 3 && unchanged < o.x.length) {
+    const n = o.x.length;
+    const a = i === 0 ? n - 1 : i - 1;
+    const c = i === n - 1 ? 0 : i + 1;
+    if (isFlat(o, points, a, i, c, argument)) {
+      dropAt(o, i);
+      i = a < i ? a : a - 1;
+      unchanged = 0;
+    } else {
+      i = c;
+      unchanged++;
+    }
+  }
+}
+
+/** Whether point i can be dropped from between a and c (see dropCollinearPoints). */
+function isFlat(
+  o: Outline,
+  points: readonly Vec2[],
+  a: number,
+  i: number,
+  c: number,
+  argument: string,
+): boolean {
+  const ax = o.x[a];
+  const ay = o.y[a];
+  const cx = o.x[c];
+  const cy = o.y[c];
+  const ex = cx - ax;
+  const ey = cy - ay;
+  const px = o.x[i] - ax;
+  const py = o.y[i] - ay;
+  const cross = ex * py - ey * px;
+  if (cross * cross > SLOP_SQ * (ex * ex + ey * ey)) return false;
+  const along = ex * px + ey * py;
+  if (along <= 0 || along >= ex * ex + ey * ey) {
+    throw new FulcrumError(
+      `${argument}: the outline turns back on itself at ${at(o, i)}: its edges from ${at(o, a)} and to ${at(o, c)} lie on one line and overlap`,
+    );
+  }
+  for (const list of [o.dropped[a], o.dropped[i]]) {
+    for (const k of list) {
+      if (distanceSqToSegment(points[k].x, points[k].y, ax, ay, cx, cy) > SLOP_SQ) return false;
+    }
+  }
+  return true;
+}
+
+/**
+ * Throws a FulcrumError naming the points when the outline is not simple with room to spare: two points
+ * within LINEAR_SLOP of each other, a point within LINEAR_SLOP of an edge it is not on, or two edges
+ * that cross.
+ */
+function checkSimple(o: Outline, argument: string): void {
+  const n = o.x.length;
+  const { x, y } = o;
+  for (let i = 0; i < n; i++) {
+    for (let j = i + 1; j < n; j++) {
+      const dx = x[j] - x[i];
+      const dy = y[j] - y[i];
+      if (dx * dx + dy * dy < SLOP_SQ) {
+        throw new FulcrumError(
+          `${argument}: ${at(o, i)} and ${at(o, j)} are the same point (closer than ${LINEAR_SLOP} m): the outline touches itself there`,
+        );
+      }
+    }
+  }
+  for (let i = 0; i < n; i++) {
+    const i1 = i + 1 === n ? 0 : i + 1;
+    for (let j = i + 2; j < n; j++) {
+      const j1 = j + 1 === n ? 0 : j + 1;
+      if (j1 === i) continue; // the edges before and after point i share it
+      const d1 = orient(x[i], y[i], x[i1], y[i1], x[j], y[j]);
+      const d2 = orient(x[i], y[i], x[i1], y[i1], x[j1], y[j1]);
+      const d3 = orient(x[j], y[j], x[j1], y[j1], x[i], y[i]);
+      const d4 = orient(x[j], y[j], x[j1], y[j1], x[i1], y[i1]);
+      if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) {
+        const t = d3 / (d3 - d4);
+        const cx = x[i] + t * (x[i1] - x[i]);
+        const cy = y[i] + t * (y[i1] - y[i]);
+        throw new FulcrumError(
+          `${argument}: the edges ${at(o, i)} to ${at(o, i1)} and ${at(o, j)} to ${at(o, j1)} cross at (${cx}, ${cy}): the outline must not cross itself`,
+        );
+      }
+    }
+  }
+  for (let v = 0; v < n; v++) {
+    for (let e = 0; e < n; e++) {
+      const e1 = e + 1 === n ? 0 : e + 1;
+      if (v === e || v === e1) continue;
+      if (distanceSqToSegment(x[v], y[v], x[e], y[e], x[e1], y[e1]) < SLOP_SQ) {
+        throw new FulcrumError(
+          `${argument}: ${at(o, v)} is closer than ${LINEAR_SLOP} m to the edge ${at(o, e)} to ${at(o, e1)}: the outline touches itself there`,
+        );
+      }
+    }
+  }
+}
+
+/** Counter-clockwise: reversed when the shoelace area is negative. */
+function makeCounterClockwise(o: Outline): void {
+  const n = o.x.length;
+  let area = 0;
+  for (let i = 1; i + 1 < n; i++) area += orient(o.x[0], o.y[0], o.x[i], o.y[i], o.x[i + 1], o.y[i + 1]);
+  if (area < 0) {
+    o.x.reverse();
+    o.y.reverse();
+    o.index.reverse();
+  }
+}
+
+/**
+ * True when corner b of a piece (edges a->b, b->c) is convex and not flat: turning left, and either by
+ * a right angle or more, or with b farther than LINEAR_SLOP from the line a-c (the rule Shape.polygon
+ * keeps hull vertices by).
+ */
+function isSharpCorner(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): boolean {
+  const cross = orient(ax, ay, bx, by, cx, cy);
+  if (cross <= 0) return false;
+  if ((bx - ax) * (cx - bx) + (by - ay) * (cy - by) <= 0) return true;
+  const ex = cx - ax;
+  const ey = cy - ay;
+  return cross * cross > SLOP_SQ * (ex * ex + ey * ey);
+}
+
+function noConvexSplit(argument: string): never {
+  throw new FulcrumError(
+    `${argument}: the outline could not be split into convex pieces (rounding: it nearly touches itself)`,
+  );
+}
+
+/**
+ * Ear clipping of a counter-clockwise simple outline, fattest ear first: an ear is a convex point whose
+ * triangle with its neighbours holds no reflex point (inside or on its edges); of all ears the one whose
+ * triangle has the largest area relative to the square of its longest edge is cut off. Clipping an ear
+ * changes only its neighbours' ear status. Returns the triangles as point index triples,
+ * counter-clockwise, with the tip in the middle; triangle k (but the last) leaves the diagonal from its
+ * first to its third point.
+ */
+function triangulate(x: readonly number[], y: readonly number[], argument: string): Int32Array {
+  const n = x.length;
+  const prev = new Int32Array(n);
+  const next = new Int32Array(n);
+  for (let i = 0; i < n; i++) {
+    prev[i] = i === 0 ? n - 1 : i - 1;
+    next[i] = i === n - 1 ? 0 : i + 1;
+  }
+  const removed = new Uint8Array(n);
+  const reflex = new Uint8Array(n);
+  const quality = new Float64Array(n); // -1: not an ear
+  const corner = (i: number) => orient(x[prev[i]], y[prev[i]], x[i], y[i], x[next[i]], y[next[i]]);
+  const earQuality = (i: number): number => {
+    if (reflex[i] === 1) return -1;
+    const a = prev[i];
+    const c = next[i];
+    for (let r = next[c]; r !== a; r = next[r]) {
+      if (
+        reflex[r] === 1 &&
+        orient(x[a], y[a], x[i], y[i], x[r], y[r]) >= 0 &&
+        orient(x[i], y[i], x[c], y[c], x[r], y[r]) >= 0 &&
+        orient(x[c], y[c], x[a], y[a], x[r], y[r]) >= 0
+      ) {
+        return -1;
+      }
+    }
+    const ab = (x[i] - x[a]) * (x[i] - x[a]) + (y[i] - y[a]) * (y[i] - y[a]);
+    const bc = (x[c] - x[i]) * (x[c] - x[i]) + (y[c] - y[i]) * (y[c] - y[i]);
+    const ca = (x[a] - x[c]) * (x[a] - x[c]) + (y[a] - y[c]) * (y[a] - y[c]);
+    return corner(i) / Math.max(ab, bc, ca);
+  };
+  for (let i = 0; i < n; i++) reflex[i] = corner(i) > 0 ? 0 : 1;
+  for (let i = 0; i < n; i++) quality[i] = earQuality(i);
+
+  const triangles = new Int32Array(3 * (n - 2));
+  for (let k = 0, left = n; left > 3; k++, left--) {
+    let tip = -1;
+    for (let i = 0; i < n; i++) {
+      if (removed[i] === 0 && quality[i] >= 0 && (tip === -1 || quality[i] > quality[tip])) tip = i;
+    }
+    if (tip === -1) noConvexSplit(argument);
+    const a = prev[tip];
+    const c = next[tip];
+    triangles[3 * k] = a;
+    triangles[3 * k + 1] = tip;
+    triangles[3 * k + 2] = c;
+    removed[tip] = 1;
+    next[a] = c;
+    prev[c] = a;
+    if (reflex[a] === 1 && corner(a) > 0) reflex[a] = 0;
+    if (reflex[c] === 1 && corner(c) > 0) reflex[c] = 0;
+    quality[a] = earQuality(a);
+    quality[c] = earQuality(c);
+  }
+  let last = 0;
+  while (removed[last] === 1) last++;
+  if (corner(last) <= 0) noConvexSplit(argument);
+  triangles[3 * (n - 3)] = prev[last];
+  triangles[3 * (n - 3) + 1] = last;
+  triangles[3 * (n - 3) + 2] = next[last];
+  return triangles;
+}
+
+/**
+ * Hertel–Mehlhorn: each diagonal of the triangulation, in the order the ears were cut, is removed when
+ * the piece it joins stays convex (isSharpCorner) at both of its ends. What is left are diagonals that
+ * each keep a reflex point of the outline convex, at most two per reflex point: at most 2r + 1 pieces
+ * for r reflex points (Hertel and Mehlhorn 1983). Pieces are lists of point indices, counter-clockwise,
+ * in the order of the triangle each grew from.
+ */
+function mergeTriangles(x: readonly number[], y: readonly number[], triangles: Int32Array): number[][] {
+  const n = x.length;
+  const count = n - 2;
+  const parent = new Int32Array(count);
+  const pieces: (number[] | null)[] = [];
+  const owner = new Map<number, number>(); // directed edge u -> v (key u * n + v): its triangle
+  for (let t = 0; t < count; t++) {
+    parent[t] = t;
+    const a = triangles[3 * t];
+    const b = triangles[3 * t + 1];
+    const c = triangles[3 * t + 2];
+    pieces.push([a, b, c]);
+    owner.set(a * n + b, t);
+    owner.set(b * n + c, t);
+    owner.set(c * n + a, t);
+  }
+  const find = (t: number): number => {
+    while (parent[t] !== t) {
+      parent[t] = parent[parent[t]];
+      t = parent[t];
+    }
+    return t;
+  };
+  for (let t = 0; t + 1 < count; t++) {
+    // the diagonal a-c that cutting ear t left: t holds c -> a, a later triangle a -> c
+    const a = triangles[3 * t];
+    const c = triangles[3 * t + 2];
+    const p = find(t);
+    const q = find(owner.get(a * n + c)!);
+    const pv = pieces[p]!;
+    const qv = pieces[q]!;
+    // p from a round to c, then q after c round to the point before a
+    const merged: number[] = [];
+    const pa = pv.indexOf(a);
+    for (let k = 0; k < pv.length; k++) merged.push(pv[(pa + k) % pv.length]);
+    const qc = qv.indexOf(c);
+    for (let k = 1; k + 1 < qv.length; k++) merged.push(qv[(qc + k) % qv.length]);
+    const ci = pv.length - 1;
+    const beforeC = merged[ci - 1];
+    const afterC = merged[ci + 1];
+    const beforeA = merged[merged.length - 1];
+    const afterA = merged[1];
+    if (
+      isSharpCorner(x[beforeC], y[beforeC], x[c], y[c], x[afterC], y[afterC]) &&
+      isSharpCorner(x[beforeA], y[beforeA], x[a], y[a], x[afterA], y[afterA])
+    ) {
+      parent[q] = p;
+      pieces[p] = merged;
+      pieces[q] = null;
+    }
+  }
+  const result: number[][] = [];
+  for (const piece of pieces) if (piece !== null) result.push(piece);
+  return result;
+}
+
+/**
+ * Splits a convex piece of k > MAX_POLYGON_VERTICES points into ceil((k - 2) / 6) pieces (the fewest
+ * of at most 8 points) by chords from its first point: each chord leaves whole pieces' worth of
+ * points on one side, about half of them, so the chords run across the piece rather than cut slivers
+ * off its edge.
+ */
+function splitLargePiece(piece: readonly number[], out: number[][]): void {
+  const k = piece.length;
+  if (k <= MAX_POLYGON_VERTICES) {
+    out.push(piece.slice());
+    return;
+  }
+  const spare = MAX_POLYGON_VERTICES - 2; // points a piece adds beyond its first two
+  const total = Math.floor((k - 3) / spare) + 1; // ceil((k - 2) / spare)
+  const j = spare * Math.floor(total / 2) + 1;
+  splitLargePiece(piece.slice(0, j + 1), out);
+  splitLargePiece([piece[0], ...piece.slice(j)], out);
+}
+
+/**
+ * Cleans a simple outline (either winding) and splits it into convex pieces of at most
+ * MAX_POLYGON_VERTICES points, every piece's points being points of the outline. The points are
+ * finite and in range (the caller checked them). Throws a FulcrumError naming `argument` and the
+ * points at fault when the outline is degenerate or not simple.
+ */
+export function decomposeOutline(points: readonly Vec2[], argument: string): Decomposition {
+  if (points.length < 3 || points.length > MAX_OUTLINE_POINTS) {
+    throw new FulcrumError(
+      `${argument} must be an array of 3 to ${MAX_OUTLINE_POINTS} points, got ${points.length} points`,
+    );
+  }
+  const o = dropRepeatedPoints(points);
+  if (o.x.length >= 3) dropCollinearPoints(o, points, argument);
+  if (o.x.length < 3) {
+    fail(
+      argument,
+      points,
+      `an outline of at least 3 points more than ${LINEAR_SLOP} m apart and off one line`,
+    );
+  }
+  checkSimple(o, argument);
+  makeCounterClockwise(o);
+  const { x, y } = o;
+  const outline = x.map((px, i) => ({ x: px, y: y[i] }));
+  const pieces: number[][] = [];
+  for (const piece of mergeTriangles(x, y, triangulate(x, y, argument))) splitLargePiece(piece, pieces);
+  return { outline, pieces: pieces.map((piece) => piece.map((i) => outline[i])) };
+}
