@@ -20,7 +20,7 @@ export { stateHash } from './api/state-hash';
 export { World, type WorldDef } from './api/world';
 export { FulcrumError } from './core/errors';
 export { Shape } from './geometry/shapes';
-export type { Capsule, Circle, Geometry, Polygon, Segment } from './geometry/types';
+export type { Capsule, Circle, Concave, Geometry, Polygon, Segment } from './geometry/types';
 export type {
   DistanceJointDef,
   JointDef,

@@ -4,7 +4,7 @@ import { checkCoordinates, checkDensity, checkNonNegativeRate } from '../core/li
 import { maxExtentFrom } from '../geometry/extent';
 import { Pack, packGeometry } from '../geometry/packed';
 import { rayCastGeometry, testPoint } from '../geometry/raycast';
-import { type Geometry, isGeometry, makeRayHit, ShapeKind } from '../geometry/types';
+import { type Concave, type Geometry, isConcave, isGeometry, makeRayHit, ShapeKind } from '../geometry/types';
 import type { AABB } from '../math/aabb';
 import { makeTransform, type Vec2 } from '../math/vec2';
 import { BodyKind } from '../store/body-store';
@@ -286,23 +286,43 @@ export class ShapeHandle {
   }
 }
 
-/** @internal Body.createShape: validates, then adds the shape to the body's list and the broad phase. */
-export function attachShape(
+/**
+ * @internal Body.createShape: validates everything, then adds the shape (or a concave shape's pieces,
+ * in order) to the body's list and the broad phase.
+ */
+export function attachShapes(
   handles: WorldHandles,
   body: Body,
-  geometry: Geometry,
+  geometry: Geometry | Concave,
   def: ShapeDef | undefined,
-): ShapeHandle {
+): ShapeHandle | ShapeHandle[] {
   const b = body.check();
-  if (!isGeometry(geometry))
-    fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment');
   const core = handles.core;
+  if (isConcave(geometry)) {
+    const d = resolveShapeDef(def);
+    checkRoom('shapes', core.shapes.liveCount + geometry.pieces.length - 1);
+    return geometry.pieces.map((piece) => attachShape(handles, body, b, piece, d));
+  }
+  if (!isGeometry(geometry))
+    fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment/concave');
   if (geometry.kind === ShapeKind.SEGMENT && core.bodies.kind[b] === BodyKind.DYNAMIC) {
     throw new FulcrumError('geometry: a segment can only be attached to a static or kinematic body');
   }
   const d = resolveShapeDef(def);
+  checkRoom('shapes', core.shapes.liveCount);
+  return attachShape(handles, body, b, geometry, d);
+}
+
+/** Adds a checked shape to body slot `b` and the broad phase, and updates the body's mass. */
+function attachShape(
+  handles: WorldHandles,
+  body: Body,
+  b: number,
+  geometry: Geometry,
+  d: ResolvedShapeDef,
+): ShapeHandle {
+  const core = handles.core;
   const shapes = core.shapes;
-  checkRoom('shapes', shapes.liveCount);
   const s = shapes.allocate();
   shapes.body[s] = b;
   shapes.geometry[s] = geometry;
