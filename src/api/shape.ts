@@ -301,7 +301,10 @@ export function attachShapes(
   if (isConcave(geometry)) {
     const d = resolveShapeDef(def);
     checkRoom('shapes', core.shapes.liveCount + geometry.pieces.length - 1);
-    return geometry.pieces.map((piece) => attachShape(handles, body, b, piece, d));
+    const pieces = geometry.pieces.map((piece) => addShape(handles, body, b, piece, d));
+    core.updateMass(b);
+    core.wake(b);
+    return pieces;
   }
   if (!isGeometry(geometry))
     fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment/concave');
@@ -310,11 +313,14 @@ export function attachShapes(
   }
   const d = resolveShapeDef(def);
   checkRoom('shapes', core.shapes.liveCount);
-  return attachShape(handles, body, b, geometry, d);
+  const shape = addShape(handles, body, b, geometry, d);
+  core.updateMass(b);
+  core.wake(b);
+  return shape;
 }
 
-/** Adds a checked shape to body slot `b` and the broad phase, and updates the body's mass. */
-function attachShape(
+/** Adds a checked shape to body slot `b` and the broad phase; the caller then updates the body's mass. */
+function addShape(
   handles: WorldHandles,
   body: Body,
   b: number,
@@ -339,11 +345,9 @@ function attachShape(
   shapes.groupIndex[s] = d.filter.groupIndex;
   shapes.next[s] = core.bodies.shapeHead[b];
   core.bodies.shapeHead[b] = s;
-  core.updateMass(b);
   core.createProxy(s, true);
   const handle = new ShapeHandle(body, s, shapes.generation[s], geometry, d.userData);
   handles.shapes[s] = handle;
-  core.wake(b);
   return handle;
 }
 

@@ -25,7 +25,10 @@ function messageOf(call: () => unknown): string {
   throw new Error('expected a FulcrumError');
 }
 
-/** Every corner turns left: strictly convex, counter-clockwise. */
+/**
+ * Every corner turns left, and none is flat: farther than 0.005 m from the line of its neighbours or
+ * turning by a right angle or more (the rule Shape.polygon keeps a hull's corners by).
+ */
 function expectConvex(piece: Polygon): void {
   const v = piece.vertices;
   expect(piece.count).toBeGreaterThanOrEqual(3);
@@ -34,7 +37,10 @@ function expectConvex(piece: Polygon): void {
     const a = v[i];
     const b = v[(i + 1) % piece.count];
     const c = v[(i + 2) % piece.count];
-    expect((b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x)).toBeGreaterThan(0);
+    const cross = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
+    const dot = (b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y);
+    expect(cross).toBeGreaterThan(0);
+    if (dot > 0) expect(cross / Math.hypot(c.x - a.x, c.y - a.y)).toBeGreaterThan(0.005);
   }
 }
 
@@ -78,6 +84,53 @@ describe('Shape.decompose', () => {
       for (const piece of pieces) expectConvex(piece);
       const area = pieces.reduce((sum, piece) => sum + signedArea(piece.vertices), 0);
       expect(Math.abs(area - signedArea(ring(n, 1)))).toBeLessThan(1e-14);
+    }
+  });
+
+  it('axis-aligned outlines: a T in 2 pieces, a U in 3, a comb of 15 teeth in 16, no piece with a straight corner', () => {
+    const t = [
+      { x: -2, y: 1 },
+      { x: -0.5, y: 1 },
+      { x: -0.5, y: -1 },
+      { x: 0.5, y: -1 },
+      { x: 0.5, y: 1 },
+      { x: 2, y: 1 },
+      { x: 2, y: 2 },
+      { x: -2, y: 2 },
+    ];
+    const u = [
+      { x: -1.5, y: 0 },
+      { x: 1.5, y: 0 },
+      { x: 1.5, y: 2 },
+      { x: 1, y: 2 },
+      { x: 1, y: 0.5 },
+      { x: -1, y: 0.5 },
+      { x: -1, y: 2 },
+      { x: -1.5, y: 2 },
+    ];
+    // a bar 9.3 m by 0.3 m with 15 teeth 0.3 m wide and 1.2 m tall on top
+    const comb = [
+      { x: 0, y: 0 },
+      { x: 9.3, y: 0 },
+    ];
+    for (let k = 15; k >= 1; k--) {
+      comb.push(
+        { x: 0.6 * k, y: 0.3 },
+        { x: 0.6 * k, y: 1.5 },
+        { x: 0.6 * k - 0.3, y: 1.5 },
+        { x: 0.6 * k - 0.3, y: 0.3 },
+      );
+    }
+    for (const [outline, count] of [
+      [t, 2],
+      [u, 3],
+      [comb, 16],
+    ] as const) {
+      const pieces = Shape.decompose(outline);
+      expect(pieces.length).toBe(count);
+      for (const piece of pieces) expectConvex(piece);
+      const area = pieces.reduce((sum, piece) => sum + signedArea(piece.vertices), 0);
+      expect(Math.abs(area - signedArea(outline))).toBeLessThan(1e-12);
     }
   });
 
