@@ -237,8 +237,9 @@ const STRAIGHT_SINE = 1e-12;
 /**
  * Classifies corner b. Sharp: turning left, by a right angle or more, or with b farther than
  * LINEAR_SLOP from the line a-c (the rule Shape.polygon keeps hull vertices by). Straight: b on that
- * line to rounding and between a and c, as where the floor of a U meets its arms. Pieces never have a
- * flat corner: two collinear edges of one polygon would clip a contact to one of them.
+ * line to rounding and between a and c, as where the floor of a U meets its arms. A merge never leaves
+ * a flat corner, as two nearly collinear edges of one polygon would clip a contact to one of them (a
+ * triangle that ear clipping had to cut thin, where the outline itself is thin, may still hold one).
  */
 function classifyCorner(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): Corner {
   const e1x = bx - ax;
