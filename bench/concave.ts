@@ -1,16 +1,10 @@
 /**
  * What a concave body costs to create: `Shape.concave(points)` alone, and a dynamic body given it
- * (`world.createBody` + `body.createShape`), for outlines of about 64 points. Timed by the process's
- * CPU time (process.cpuUsage), which a busy machine's other processes inflate less than the wall
- * clock; each figure is the median, and the best, of 30 batches of 200. Run with
- * `npx tsx bench/concave.ts`.
+ * (`world.createBody` + `body.createShape`), for outlines of about 64 points. Each figure is the
+ * median, and the best, of 50 batches of 200 after a warm-up: on a busy machine the best is the one
+ * to read. Run with `npx tsx bench/concave.ts`.
  */
 import { Shape, type Vec2, World } from '../src/index';
-
-function cpuMs(): number {
-  const u = process.cpuUsage();
-  return (u.user + u.system) / 1000;
-}
 
 /** 32 spikes: 32 reflex points, the most pieces a 64-point outline gives */
 function star(): Vec2[] {
@@ -47,7 +41,7 @@ function comb(): Vec2[] {
   return points;
 }
 
-const BATCHES = 30;
+const BATCHES = 50;
 const PER_BATCH = 200;
 
 function summary(samples: number[]): string {
@@ -59,12 +53,12 @@ for (const [name, outline] of Object.entries({ star: star(), gear: gear(), comb:
   const pieces = Shape.concave(outline).pieces.length;
   const alone: number[] = [];
   const body: number[] = [];
-  for (let batch = 0; batch < BATCHES; batch++) {
-    let t = cpuMs();
+  for (let batch = -5; batch < BATCHES; batch++) {
+    let t = performance.now();
     for (let i = 0; i < PER_BATCH; i++) Shape.concave(outline);
-    alone.push(((cpuMs() - t) * 1000) / PER_BATCH);
+    if (batch >= 0) alone.push(((performance.now() - t) * 1000) / PER_BATCH);
     const world = new World();
-    t = cpuMs();
+    t = performance.now();
     for (let i = 0; i < PER_BATCH; i++) {
       const b = world.createBody({
         type: 'dynamic',
@@ -72,7 +66,7 @@ for (const [name, outline] of Object.entries({ star: star(), gear: gear(), comb:
       });
       b.createShape(Shape.concave(outline));
     }
-    body.push(((cpuMs() - t) * 1000) / PER_BATCH);
+    if (batch >= 0) body.push(((performance.now() - t) * 1000) / PER_BATCH);
   }
   console.log(`${name}: ${outline.length} points, ${pieces} pieces`);
   console.log(`  Shape.concave:               ${summary(alone)}`);
