@@ -6,7 +6,8 @@ export const MAX_POLYGON_VERTICES = 8;
 
 /**
  * The most points of an outline that Shape.decompose and Shape.concave split: checking that it is
- * simple and triangulating it take time quadratic in the count (about a millisecond at this bound).
+ * simple and triangulating it take time quadratic in the count (1.4 ms for a 1024-point gear, 7 ms
+ * for a 1024-point star of 512 spikes).
  */
 export const MAX_OUTLINE_POINTS = 1024;
 
