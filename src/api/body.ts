@@ -9,7 +9,7 @@ import {
   Limits,
 } from '../core/limits';
 import { localScale, scaleGeometry } from '../geometry/scale-geometry';
-import type { Geometry } from '../geometry/types';
+import type { Concave, Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
 import { makeRotInto, rotAngle } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
@@ -17,7 +17,7 @@ import { BodyFlag, BodyKind, S } from '../store/body-store';
 import type { WorldCore } from '../world/world-core';
 import { changeBodyKind, replaceShapeGeometry, sleepIsland } from '../world/world-edits';
 import type { WorldHandles } from './handles';
-import { attachShape, detachShape, type ShapeDef, type ShapeHandle } from './shape';
+import { attachShapes, detachShape, type ShapeDef, type ShapeHandle } from './shape';
 import type { World } from './world';
 
 export type BodyType = 'static' | 'kinematic' | 'dynamic';
@@ -472,9 +472,18 @@ export class Body {
     };
   }
 
-  createShape(geometry: Geometry, def?: ShapeDef): ShapeHandle {
+  /**
+   * Attaches a shape made by `Shape.*` with the options `def` and returns its handle. A concave shape
+   * (`Shape.concave`) attaches each of its convex pieces with `def`, as shapes of this body that never
+   * collide with one another, and returns their handles in the order of `concave.pieces`. Everything is
+   * checked first: a call that throws leaves the world as it was.
+   */
+  createShape(geometry: Concave, def?: ShapeDef): ShapeHandle[];
+  createShape(geometry: Geometry, def?: ShapeDef): ShapeHandle;
+  createShape(geometry: Geometry | Concave, def?: ShapeDef): ShapeHandle | ShapeHandle[];
+  createShape(geometry: Geometry | Concave, def?: ShapeDef): ShapeHandle | ShapeHandle[] {
     this.unlocked();
-    return attachShape(this.handles, this, geometry, def);
+    return attachShapes(this.handles, this, geometry, def);
   }
 
   destroyShape(shape: ShapeHandle): void {

@@ -4,7 +4,7 @@ import { checkCoordinates, checkDensity, checkNonNegativeRate } from '../core/li
 import { maxExtentFrom } from '../geometry/extent';
 import { Pack, packGeometry } from '../geometry/packed';
 import { rayCastGeometry, testPoint } from '../geometry/raycast';
-import { type Geometry, isGeometry, makeRayHit, ShapeKind } from '../geometry/types';
+import { type Concave, type Geometry, isConcave, isGeometry, makeRayHit, ShapeKind } from '../geometry/types';
 import type { AABB } from '../math/aabb';
 import { makeTransform, type Vec2 } from '../math/vec2';
 import { BodyKind } from '../store/body-store';
@@ -309,49 +309,75 @@ export class ShapeHandle {
   }
 }
 
-/** @internal Throws unless `geometry` is a geometry a body of kind `kind` can hold. */
-export function checkGeometryFor(kind: BodyKind, geometry: unknown): asserts geometry is Geometry {
-  if (!isGeometry(geometry))
-    fail('geometry', geometry, 'a geometry made by Shape.circle/box/polygon/capsule/segment');
+/**
+ * @internal Throws unless `geometry` is a geometry a body of kind `kind` can hold; `makers` names the
+ * factories the caller takes.
+ */
+export function checkGeometryFor(
+  kind: BodyKind,
+  geometry: unknown,
+  makers = 'Shape.circle/box/polygon/capsule/segment',
+): asserts geometry is Geometry {
+  if (!isGeometry(geometry)) fail('geometry', geometry, `a geometry made by ${makers}`);
   if (geometry.kind === ShapeKind.SEGMENT && kind === BodyKind.DYNAMIC) {
     throw new FulcrumError('geometry: a segment can only be attached to a static or kinematic body');
   }
 }
 
-/** @internal Body.createShape: validates, then adds the shape to the body's list and the broad phase. */
-export function attachShape(
+/**
+ * @internal Body.createShape: validates everything, then adds the shape (or a concave shape's pieces,
+ * in order) to the body's list and the broad phase.
+ */
+export function attachShapes(
   handles: WorldHandles,
   body: Body,
-  geometry: Geometry,
+  geometry: Geometry | Concave,
   def: ShapeDef | undefined,
-): ShapeHandle {
+): ShapeHandle | ShapeHandle[] {
   const b = body.check();
   const core = handles.core;
-  checkGeometryFor(core.bodies.kind[b], geometry);
+  if (isConcave(geometry)) {
+    const d = resolveShapeDef(def);
+    checkRoom('shapes', core.shapes.liveCount + geometry.pieces.length - 1);
+    const pieces = geometry.pieces.map((piece) => addShape(handles, body, b, piece, d));
+    core.updateMass(b);
+    core.wake(b);
+    return pieces;
+  }
+  checkGeometryFor(core.bodies.kind[b], geometry, 'Shape.circle/box/polygon/capsule/segment/concave');
   const d = resolveShapeDef(def);
+  checkRoom('shapes', core.shapes.liveCount);
+  const shape = addShape(handles, body, b, geometry, d);
+  core.updateMass(b);
+  core.wake(b);
+  return shape;
+}
+
+/** Adds a checked shape to body slot `b` and the broad phase; the caller then updates the body's mass. */
+function addShape(
+  handles: WorldHandles,
+  body: Body,
+  b: number,
+  geometry: Geometry,
+  d: ResolvedShapeDef,
+): ShapeHandle {
+  const core = handles.core;
   const shapes = core.shapes;
-  checkRoom('shapes', shapes.liveCount);
   const s = shapes.allocate();
   shapes.body[s] = b;
-  shapes.geometry[s] = geometry;
-  packGeometry(geometry, shapes.packed, s * Pack.STRIDE);
-  shapes.kind[s] = geometry.kind;
+  shapes.setGeometry(s, geometry);
   shapes.flags[s] = d.flags;
   shapes.density[s] = d.density;
   shapes.friction[s] = d.friction;
   shapes.restitution[s] = d.restitution;
-  shapes.radius[s] = geometry.kind === ShapeKind.SEGMENT ? 0 : geometry.radius;
-  shapes.originExtent[s] = maxExtentFrom(geometry, 0, 0);
   shapes.categoryBits[s] = d.filter.categoryBits;
   shapes.maskBits[s] = d.filter.maskBits;
   shapes.groupIndex[s] = d.filter.groupIndex;
   shapes.next[s] = core.bodies.shapeHead[b];
   core.bodies.shapeHead[b] = s;
-  core.updateMass(b);
   core.createProxy(s, true);
   const handle = new ShapeHandle(body, s, shapes.generation[s], geometry, d.userData);
   handles.shapes[s] = handle;
-  core.wake(b);
   return handle;
 }
 

@@ -78,11 +78,39 @@ function removeFlatVertices(hull: Vec2[]): void {
 }
 
 /**
- * Convex hull of finite points, counter-clockwise, with points closer than LINEAR_SLOP welded and
- * collinear points removed. Throws FulcrumError naming `argument` when the hull is degenerate or has
- * more than MAX_POLYGON_VERTICES vertices.
+ * Throws a FulcrumError naming the first point that lies deeper than LINEAR_SLOP inside the hull: the
+ * points are then not a convex outline, and their hull would be a larger shape than the one drawn
+ * (an L of area 1.75 would weigh as its hull of area 2.875). Points the hull drops for being repeated
+ * or collinear lie within LINEAR_SLOP of its edges and pass.
  */
-export function computeHull(points: readonly Vec2[], argument: string): Vec2[] {
+function checkOnHull(points: readonly Vec2[], hull: readonly Vec2[], argument: string): void {
+  for (let i = 0; i < points.length; i++) {
+    const p = points[i];
+    // inside a convex polygon, the distance to its boundary is the least distance to an edge's line
+    let depth = Number.POSITIVE_INFINITY;
+    for (let k = 0; k < hull.length; k++) {
+      const a = hull[k];
+      const b = hull[k + 1 === hull.length ? 0 : k + 1];
+      const ex = b.x - a.x;
+      const ey = b.y - a.y;
+      depth = Math.min(depth, (ex * (p.y - a.y) - ey * (p.x - a.x)) / Math.sqrt(ex * ex + ey * ey));
+    }
+    if (depth > LINEAR_SLOP) {
+      fail(
+        `${argument}[${i}]`,
+        p,
+        `on the convex hull of ${argument} (it lies ${depth} m inside: the outline is concave, and ` +
+          `Shape.concave(${argument}) splits a concave outline into convex pieces)`,
+      );
+    }
+  }
+}
+
+/**
+ * Convex hull of finite points, counter-clockwise, with points closer than LINEAR_SLOP welded and
+ * collinear points removed. Throws FulcrumError naming `argument` when the hull is degenerate.
+ */
+export function convexHull(points: readonly Vec2[], argument: string): Vec2[] {
   const welded = weld(points);
   if (welded.length < 3) {
     fail(argument, points, `at least 3 points more than ${LINEAR_SLOP} m apart`);
@@ -92,11 +120,23 @@ export function computeHull(points: readonly Vec2[], argument: string): Vec2[] {
   if (hull === null || hull.length < 3) {
     fail(argument, points, `points that are not all collinear (within ${LINEAR_SLOP} m)`);
   }
+  return hull;
+}
+
+/**
+ * The vertices of a convex polygon through `points`: their convex hull (see convexHull). Throws
+ * FulcrumError naming `argument` when the hull is degenerate, when a point lies inside it (a concave
+ * outline) or when it has more than MAX_POLYGON_VERTICES vertices.
+ */
+export function computeHull(points: readonly Vec2[], argument: string): Vec2[] {
+  const hull = convexHull(points, argument);
+  checkOnHull(points, hull, argument);
   if (hull.length > MAX_POLYGON_VERTICES) {
     fail(
       argument,
       points,
-      `points whose convex hull has at most ${MAX_POLYGON_VERTICES} vertices (it has ${hull.length})`,
+      `points whose convex hull has at most ${MAX_POLYGON_VERTICES} vertices (it has ${hull.length}; ` +
+        `Shape.concave(${argument}) splits a longer outline into pieces)`,
     );
   }
   return hull;

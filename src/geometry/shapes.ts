@@ -3,8 +3,9 @@ import { checkAngle, checkCoordinates, checkRange, checkSize, Limits } from '../
 import { makeRot } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
 import { LINEAR_SLOP } from './constants';
+import { decomposeOutline } from './decompose';
 import { computeHull } from './hull';
-import { type Capsule, type Circle, type Polygon, type Segment, ShapeKind } from './types';
+import { type Capsule, type Circle, type Concave, type Polygon, type Segment, ShapeKind } from './types';
 
 function frozenPoint(x: number, y: number): Vec2 {
   return Object.freeze({ x, y });
@@ -56,6 +57,14 @@ function areaCentroid(vertices: readonly Vec2[]): Vec2 {
   return frozenPoint(o.x + cx / area, o.y + cy / area);
 }
 
+/** The points of an outline, each checked: by index, not map(), which skips the holes of a sparse array. */
+function checkPoints(points: readonly Vec2[]): Vec2[] {
+  if (!Array.isArray(points)) fail('points', points, 'an array of at least 3 vectors { x, y }');
+  const checked: Vec2[] = [];
+  for (let i = 0; i < points.length; i++) checked.push(checkCoordinates(`points[${i}]`, points[i]));
+  return checked;
+}
+
 function checkApart(p1: Vec2, p2: Vec2, value: unknown): void {
   const dx = p2.x - p1.x;
   const dy = p2.y - p1.y;
@@ -92,14 +101,41 @@ export const Shape = {
     return makePolygon(vertices, 0, c);
   },
 
-  /** Convex hull of `points`; `radius` rounds the corners (the surface is the hull inflated by radius). */
+  /**
+   * A convex polygon through `points` (in any order, up to 8 corners); `radius` rounds the corners (the
+   * surface is the polygon inflated by radius). Repeated points and points within 0.005 m of the line
+   * of their neighbours are dropped. A point farther inside is refused with a FulcrumError: the outline
+   * is concave, and `Shape.concave` is the shape for it.
+   */
   polygon(points: readonly Vec2[], radius?: number): Polygon {
     const r = radius === undefined ? 0 : checkRange('radius', radius, 0, Limits.COORDINATE);
-    if (!Array.isArray(points)) fail('points', points, 'an array of at least 3 vectors { x, y }');
-    // by index, not map(): map skips the holes of a sparse array
-    const checked: Vec2[] = [];
-    for (let i = 0; i < points.length; i++) checked.push(checkCoordinates(`points[${i}]`, points[i]));
-    return makePolygon(computeHull(checked, 'points'), r);
+    return makePolygon(computeHull(checkPoints(points), 'points'), r);
+  },
+
+  /**
+   * Splits a simple outline (any winding, 3 to 1024 points, no edge crossing or touching another) into
+   * convex polygons of at most 8 vertices that do not overlap and whose union is the outline. The
+   * outline is cleaned first: points within 0.005 m of the point before and points within 0.005 m of
+   * the line of their neighbours are dropped. A self-intersecting or degenerate outline throws a
+   * FulcrumError that names the points at fault.
+   */
+  decompose(points: readonly Vec2[]): Polygon[] {
+    const { pieces } = decomposeOutline(checkPoints(points), 'points');
+    return pieces.map((piece) => makePolygon(piece, 0));
+  },
+
+  /**
+   * A concave shape: the outline and its convex pieces (see `decompose`). `body.createShape(concave,
+   * def)` attaches every piece with `def` and returns their handles; the body's mass, centre of mass
+   * and inertia are then the outline's.
+   */
+  concave(points: readonly Vec2[]): Concave {
+    const { outline, pieces } = decomposeOutline(checkPoints(points), 'points');
+    return Object.freeze({
+      type: 'concave',
+      outline: Object.freeze(outline.map((p) => frozenPoint(p.x, p.y))),
+      pieces: Object.freeze(pieces.map((piece) => makePolygon(piece, 0))),
+    });
   },
 
   /** The set of points within `radius` of the segment p1-p2. */

@@ -93,6 +93,21 @@ describe('docs examples', () => {
     expect(box.isAwake).toBe(false);
   });
 
+  it('concave: the L weighs its 1.75 m², rests on the ground and sleeps; the cup holds the ball', async () => {
+    const { ball, cup, cupPieces, l, pieces, refusal } = await import('../../docs/examples/concave');
+    expect(pieces.length).toBe(2);
+    expect(l.mass).toBeCloseTo(2 * 1.75, 12);
+    // the L as two rectangles: [0, 2] x [0, 0.5] (1 m²) and [0, 0.5] x [0.5, 2] (0.75 m²)
+    expect(l.localCenter.x).toBeCloseTo((1 * 1 + 0.75 * 0.25) / 1.75, 12);
+    expect(l.localCenter.y).toBeCloseTo((1 * 0.25 + 0.75 * 1.25) / 1.75, 12);
+    expect(l.position.y).toBeCloseTo(0, 2); // its bottom edge on the ground's top
+    expect(l.isAwake).toBe(false);
+    expect(refusal).toContain('Shape.concave');
+    expect(cup.shapes.length).toBe(cupPieces.length);
+    expect(ball.position.y).toBeCloseTo(0.5 + 0.4, 2); // on the cup's floor, between its walls
+    expect(Math.abs(ball.position.x - 2)).toBeLessThan(0.6);
+  });
+
   it('joints: the pendulum keeps its 1 m arm and the speed its fall gives it', async () => {
     const { arm, speed, bob } = await import('../../docs/examples/joints');
     expect(Math.abs(arm - 1)).toBeLessThan(1e-3);

@@ -75,6 +75,15 @@ const badPolygon: unknown[] = [
     { x: Number.NaN, y: 0 },
     { x: 1, y: 1 },
   ],
+  // a concave outline (Shape.concave takes it)
+  [
+    { x: 0, y: 0 },
+    { x: 2, y: 0 },
+    { x: 2, y: 0.5 },
+    { x: 0.5, y: 0.5 },
+    { x: 0.5, y: 2 },
+    { x: 0, y: 2 },
+  ],
   // 9 distinct hull vertices (a polygon has at most 8)
   Array.from({ length: 9 }, (_, i) => ({
     x: Math.cos((2 * Math.PI * i) / 9),
@@ -83,6 +92,66 @@ const badPolygon: unknown[] = [
   null,
   'square',
   { length: 3 },
+];
+/** Outlines Shape.concave refuses: crossing, touching, doubling back, degenerate, not points. */
+const badOutline: unknown[] = [
+  [
+    { x: 0, y: 0 },
+    { x: 2, y: 2 },
+    { x: 2, y: 0 },
+    { x: 0, y: 2 },
+  ],
+  [
+    { x: 0, y: 0 },
+    { x: 1, y: 0 },
+    { x: 1, y: 1 },
+    { x: 2, y: 1 },
+    { x: 2, y: 2 },
+    { x: 1, y: 2 },
+    { x: 1, y: 1 },
+    { x: 0, y: 1 },
+  ],
+  [
+    { x: 0, y: 0 },
+    { x: 2, y: 0 },
+    { x: 2, y: 2 },
+    { x: 1, y: 0.001 },
+    { x: 0, y: 2 },
+  ],
+  [
+    { x: 0, y: 0 },
+    { x: 2, y: 0 },
+    { x: 2, y: 1 },
+    { x: 3, y: 1 },
+    { x: 2.5, y: 1 },
+    { x: 0, y: 1 },
+  ],
+  [
+    { x: 0, y: 0 },
+    { x: 1, y: 0 },
+    { x: 2, y: 0 },
+  ],
+  [
+    { x: 0, y: 0 },
+    { x: 1, y: 0 },
+  ],
+  Array.from({ length: 1025 }, (_, i) => ({ x: Math.cos(i / 163), y: Math.sin(i / 163) })),
+  new Array(3),
+  [
+    { x: 0, y: 0 },
+    { x: Number.NaN, y: 0 },
+    { x: 1, y: 1 },
+  ],
+  null,
+  'L',
+];
+const anL = [
+  { x: 0, y: 0 },
+  { x: 2, y: 0 },
+  { x: 2, y: 0.5 },
+  { x: 0.5, y: 0.5 },
+  { x: 0.5, y: 2 },
+  { x: 0, y: 2 },
 ];
 const badGeometry: unknown[] = [null, {}, { type: 'circle', radius: 1 }, 'circle', 3];
 const badTransform: unknown[] = [
@@ -221,6 +290,8 @@ export const invalidCalls: Invalid[] = [
       v as number,
     ),
   ),
+  worldCall('Shape.concave', badOutline, (_, v) => Shape.concave(v as never)),
+  worldCall('Shape.decompose', badOutline, (_, v) => Shape.decompose(v as never)),
   worldCall('Shape.capsule', [origin, { x: 1e-4, y: 0 }, ...badVec], (_, v) =>
     Shape.capsule(origin, v as never, 0.5),
   ),
@@ -269,6 +340,30 @@ export const invalidCalls: Invalid[] = [
       ...badDef,
     ],
     (b, v) => b.createShape(Shape.circle(0.5), v),
+  ),
+  bodyCall(
+    'createShape(concave, def)',
+    [
+      { density: -1 },
+      { friction: Number.NaN },
+      { isSensor: 1 },
+      ...badFilter.map((filter) => ({ filter })),
+      ...badDef,
+    ],
+    (b, v) => b.createShape(Shape.concave(anL), v),
+  ),
+  bodyCall(
+    'createShape(a hand-made concave shape)',
+    [
+      { type: 'concave', outline: anL, pieces: Shape.concave(anL).pieces },
+      Object.freeze({
+        type: 'concave',
+        outline: Object.freeze(anL.slice()),
+        pieces: Object.freeze([Shape.circle(1)]),
+      }),
+      Object.freeze({ type: 'concave', outline: Object.freeze(anL.slice()), pieces: Object.freeze([]) }),
+    ],
+    (b, v) => b.createShape(v),
   ),
   bodyCall('destroyShape', [null, {}, 'shape'], (b, v) => b.destroyShape(v)),
   (h) => {

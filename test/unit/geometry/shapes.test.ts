@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { FulcrumError } from '../../../src/core/errors';
 import { computeShapeBounds } from '../../../src/geometry/bounds';
+import { convexHull } from '../../../src/geometry/hull';
 import { Shape } from '../../../src/geometry/shapes';
 import { type Polygon, ShapeKind } from '../../../src/geometry/types';
 import { makeBounds } from '../../../src/math/aabb';
@@ -55,27 +56,121 @@ function bruteForceExtremeCount(points: { x: number; y: number }[]): number {
   return count;
 }
 
+/**
+ * How deep `p` lies inside the convex hull of `points`, from the hull's edges found by brute force:
+ * a pair (a, b) is an edge when no point lies to its right. Negative or 0 on the hull.
+ */
+function bruteForceDepth(p: { x: number; y: number }, points: { x: number; y: number }[]): number {
+  let depth = Number.POSITIVE_INFINITY;
+  for (const a of points) {
+    for (const b of points) {
+      const ex = b.x - a.x;
+      const ey = b.y - a.y;
+      const len = Math.hypot(ex, ey);
+      if (len === 0 || points.some((q) => ex * (q.y - a.y) - ey * (q.x - a.x) < 0)) continue;
+      depth = Math.min(depth, (ex * (p.y - a.y) - ey * (p.x - a.x)) / len);
+    }
+  }
+  return depth;
+}
+
 describe('Shape.polygon hull', () => {
-  it('is the convex hull of random point sets (brute-force convexity and extreme points)', () => {
+  it('convexHull is the convex hull of random point sets (brute-force convexity and extreme points)', () => {
     const rnd = random(7);
     let compared = 0;
     for (let trial = 0; trial < 150; trial++) {
       const n = 3 + Math.floor(rnd() * 6);
       const points = Array.from({ length: n }, () => ({ x: rnd() * 4 - 2, y: rnd() * 4 - 2 }));
-      let g: Polygon;
+      let hull: { x: number; y: number }[];
       try {
-        g = Shape.polygon(points);
+        hull = convexHull(points, 'points');
       } catch (e) {
         expect(e).toBeInstanceOf(FulcrumError); // nearly collinear sets are rejected, never mangled
         continue;
       }
-      expectHullOf(g, points);
+      expectHullOf(Shape.polygon(hull), points);
       const extreme = bruteForceExtremeCount(points);
       // the hull may only drop extreme points that are nearly collinear (within 0.005 m)
-      expect(g.count).toBeLessThanOrEqual(extreme);
-      if (g.count === extreme) compared++;
+      expect(hull.length).toBeLessThanOrEqual(extreme);
+      if (hull.length === extreme) compared++;
     }
     expect(compared).toBeGreaterThan(130);
+  });
+
+  it('refuses a point set with a point inside its hull (a concave outline), naming the point and Shape.concave', () => {
+    const rnd = random(8);
+    let accepted = 0;
+    let refused = 0;
+    for (let trial = 0; trial < 300; trial++) {
+      const n = 3 + Math.floor(rnd() * 6);
+      const points = Array.from({ length: n }, () => ({ x: rnd() * 4 - 2, y: rnd() * 4 - 2 }));
+      const depths = points.map((p) => bruteForceDepth(p, points));
+      const deepest = Math.max(...depths);
+      let error: unknown;
+      try {
+        expectHullOf(Shape.polygon(points), points);
+        accepted++;
+      } catch (e) {
+        error = e;
+      }
+      if (deepest > 0.006) {
+        // a point deeper than the 0.005 m tolerance inside the hull: refused, that point named
+        expect(error).toBeInstanceOf(FulcrumError);
+        const message = (error as Error).message;
+        expect(message).toContain('Shape.concave');
+        const named = Number(/points\[(\d+)\]/.exec(message)![1]);
+        expect(depths[named]).toBeGreaterThan(0.004);
+        refused++;
+      } else if (deepest <= 0 && error !== undefined) {
+        // every point on the hull: only a degenerate (nearly collinear) set may be refused
+        expect(error).toBeInstanceOf(FulcrumError);
+        expect((error as Error).message).not.toContain('Shape.concave');
+      }
+    }
+    expect(accepted).toBeGreaterThan(30);
+    expect(refused).toBeGreaterThan(150);
+  });
+
+  it('refuses an L outline (area 1.75, hull 2.875) instead of taking its hull', () => {
+    const l = [
+      { x: 0, y: 0 },
+      { x: 2, y: 0 },
+      { x: 2, y: 0.5 },
+      { x: 0.5, y: 0.5 },
+      { x: 0.5, y: 1.5 },
+      { x: 0, y: 1.5 },
+    ];
+    expectThrows(() => Shape.polygon(l), 'points[3]', '{ x: 0.5, y: 0.5 }', '0.5 m inside', 'Shape.concave');
+  });
+
+  it('accepts points that lie on an edge or within 0.005 m inside it', () => {
+    const g = Shape.polygon([
+      { x: 0, y: 0 },
+      { x: 1, y: 0.004 }, // 4 mm inside the bottom edge
+      { x: 2, y: 0 },
+      { x: 2, y: 1 },
+      { x: 2, y: 2 },
+      { x: 1.999, y: 2.002 }, // welded into (2, 2)
+      { x: 0, y: 2 },
+    ]);
+    expect(g.vertices.map((p) => [p.x, p.y])).toEqual([
+      [0, 0],
+      [2, 0],
+      [2, 2],
+      [0, 2],
+    ]);
+    expectThrows(
+      () =>
+        Shape.polygon([
+          { x: 0, y: 0 },
+          { x: 1, y: 0.006 }, // 6 mm inside
+          { x: 2, y: 0 },
+          { x: 2, y: 2 },
+          { x: 0, y: 2 },
+        ]),
+      'points[1]',
+      'Shape.concave',
+    );
   });
 
   it('welds near points, removes collinear points and keeps counter-clockwise order', () => {
@@ -86,7 +181,6 @@ describe('Shape.polygon hull', () => {
       { x: 2, y: 0 }, // makes (1, 0) collinear
       { x: 2.001, y: 0.001 }, // welded into (2, 0)
       { x: 2, y: 2 },
-      { x: 1, y: 1 }, // interior
     ]);
     expect(g.count).toBe(4);
     expect(g.vertices.map((p) => [p.x, p.y])).toEqual([
