@@ -1,4 +1,3 @@
-import { NO_MOTION } from '../broad-phase/broad-phase';
 import { IntList } from '../broad-phase/int-list';
 import { packedBounds } from '../geometry/bounds';
 import { minExtent } from '../geometry/extent';
@@ -96,7 +95,7 @@ export function solveBullets(core: WorldCore): void {
     const k = 4 * i;
     sweepAgainst(core, b, bulletStarts, k, ALL_TREES_MASK);
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-      broad.moveProxy(shapes.proxyKey[s], shapes, s, NO_MOTION);
+      broad.placeProxy(shapes.proxyKey[s], shapes, s);
     }
   }
   bulletCount = 0;

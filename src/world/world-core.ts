@@ -1,4 +1,4 @@
-import { BroadPhase, NO_MOTION, type PairFilter, ProxyType } from '../broad-phase/broad-phase';
+import { BroadPhase, type PairFilter, ProxyType } from '../broad-phase/broad-phase';
 import { IntList } from '../broad-phase/int-list';
 import { PairSet } from '../broad-phase/pair-set';
 import {
@@ -226,7 +226,7 @@ export class WorldCore implements PairFilter {
     for (let s = this.bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
       this.refreshShapeBounds(s);
       const key = shapes.proxyKey[s];
-      if (!this.broadPhase.moveProxy(key, shapes, s, NO_MOTION)) {
+      if (!this.broadPhase.placeProxy(key, shapes, s)) {
         this.broadPhase.bufferMove(key);
       }
     }
