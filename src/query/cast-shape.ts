@@ -3,6 +3,7 @@ import { IntList } from '../broad-phase/int-list';
 import { computeShapeBounds } from '../geometry/bounds';
 import { makeShapeCastInput, makeShapeCastOutput, shapeCast } from '../geometry/shape-cast';
 import { makeProxy } from '../geometry/shape-proxy';
+import { GjkMemory } from '../geometry/simplex';
 import { makeBounds } from '../math/aabb';
 import { checkGeometry, checkPoint, resolveTransform } from './args';
 import { makeResolvedQueryFilter, passesQueryFilter, resolveQueryFilter } from './filter';
@@ -14,6 +15,7 @@ const found = new IntList(64);
 const input = makeShapeCastInput();
 const output = makeShapeCastOutput();
 const bounds = makeBounds();
+const gjk = new GjkMemory();
 
 /**
  * Moves `geometry` from `transform` along `translation` (no rotation) and returns the first shape it
@@ -62,7 +64,7 @@ export function castShape(
     makeProxy(shapes.geometry[s]!, input.proxyA);
     core.fillTransform(shapes.body[s], input.transformA);
     input.maxFraction = fraction;
-    shapeCast(input, output);
+    shapeCast(gjk, input, output);
     if (!output.hit) continue;
     const f = output.fraction;
     if (best === -1 || f < fraction || (f === fraction && s < best)) {

@@ -6,6 +6,7 @@ import { computeShapeBounds } from '../geometry/bounds';
 import { type DistanceOutput, makeDistanceOutput, shapeDistance } from '../geometry/distance';
 import { testPoint } from '../geometry/raycast';
 import { makeProxy, makeShapeProxy } from '../geometry/shape-proxy';
+import { GjkMemory } from '../geometry/simplex';
 import type { AABB } from '../math/aabb';
 import { makeBounds } from '../math/aabb';
 import { makeTransform } from '../math/vec2';
@@ -29,6 +30,7 @@ const bounds = makeBounds();
 const proxyA = makeShapeProxy();
 const proxyB = makeShapeProxy();
 const distance: DistanceOutput = makeDistanceOutput();
+const gjk = new GjkMemory();
 
 /** Handles of the selected slots, ascending. */
 function handles(world: World): ShapeHandle[] {
@@ -111,7 +113,7 @@ export function overlapShape(
     const s = found.data[i];
     if (!passesQueryFilter(shapes, s, filter)) continue;
     makeProxy(shapes.geometry[s]!, proxyA);
-    shapeDistance(proxyA, core.fillTransform(shapes.body[s], xf), proxyB, queryXf, false, distance);
+    shapeDistance(gjk, proxyA, core.fillTransform(shapes.body[s], xf), proxyB, queryXf, false, distance);
     if (distance.distance <= proxyA.radius + proxyB.radius) selected.push(s);
   }
   return handles(world);
