@@ -236,7 +236,6 @@ const NOT_MOVED_YET = new Set<string>([
   'src/render/debug-draw.ts:pA',
   'src/render/debug-draw.ts:pB',
   'src/render/debug-draw.ts:pC',
-  'src/solver/contact-solver.ts:support',
 ]);
 
 const root = resolve(__dirname, '../..');
