@@ -136,10 +136,8 @@ export class BroadPhase {
   private searchNear = false;
   private searchFull = false;
   private searchCrowded = false;
-  /*
-   * Working memory, not state: private (#) fields are no property keys, so the snapshot, which writes
-   * a world's objects key by key, leaves them out (a query must leave no trace in it).
-   */
+  // Working memory, not state: private (#) fields are no property keys, so the snapshot, which writes
+  // a world's objects key by key, leaves them out (a query must leave no trace in it).
   /** the box `query` hands to `queryBox`, and the fat box `moveProxy` hands to the tree */
   #queryBox = new Float64Array(4);
   #fatBox = new Float64Array(4);
