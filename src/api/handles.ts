@@ -1,11 +1,12 @@
+import { QueryMemory } from '../query/query-memory';
 import type { WorldCore } from '../world/world-core';
 import type { Body } from './body';
 import { EventDispatcher } from './events';
 import type { ShapeHandle } from './shape';
 
 /**
- * The public layer's side of one world: the handle object of each live body and shape slot, and the
- * events that name them. Handles reach the engine through `core` and each other through this table,
+ * The public layer's side of one world: the handle object of each live body and shape slot, the
+ * events that name them, and the queries' working memory. Handles reach the engine through `core` and each other through this table,
  * never through the World facade. Internal: public types reach it only through internal members.
  */
 export class WorldHandles {
@@ -22,6 +23,8 @@ export class WorldHandles {
    * @internal
    */
   declare private events: EventDispatcher | undefined;
+  /** The queries' working memory, for the same reasons and made the same way as the dispatcher. */
+  declare private queryScratch: QueryMemory | undefined;
 
   /** @internal */
   constructor(core: WorldCore) {
@@ -34,5 +37,13 @@ export class WorldHandles {
       Object.defineProperty(this, 'events', { value: new EventDispatcher(this), enumerable: false });
     }
     return this.events!;
+  }
+
+  /** @internal */
+  get queryMemory(): QueryMemory {
+    if (this.queryScratch === undefined) {
+      Object.defineProperty(this, 'queryScratch', { value: new QueryMemory(), enumerable: false });
+    }
+    return this.queryScratch!;
   }
 }

@@ -91,15 +91,13 @@ function swapBytes(bytes: Uint8Array, elementSize: number): void {
   }
 }
 
-const encoder = new TextEncoder();
-const decoder = new TextDecoder('utf-8', { fatal: true });
-
 /** A growable little-endian byte buffer. */
 export class ByteWriter {
   private bytes = new Uint8Array(1024);
   private view = new DataView(this.bytes.buffer);
   length = 0;
   private readonly strings = new Map<string, number>();
+  private readonly encoder = new TextEncoder();
 
   private reserve(n: number): void {
     if (this.length + n <= this.bytes.length) return;
@@ -158,7 +156,7 @@ export class ByteWriter {
     const n = this.strings.size;
     this.strings.set(s, n);
     this.u32(n);
-    const utf8 = encoder.encode(s);
+    const utf8 = this.encoder.encode(s);
     this.u32(utf8.length);
     this.raw(utf8, 1);
   }
@@ -192,6 +190,7 @@ export class ByteReader {
   private readonly view: DataView;
   pos: number;
   private readonly strings: string[] = [];
+  private readonly decoder = new TextDecoder('utf-8', { fatal: true });
 
   constructor(
     private readonly bytes: Uint8Array,
@@ -245,7 +244,7 @@ export class ByteReader {
     const at = this.need(n);
     let s: string;
     try {
-      s = decoder.decode(this.bytes.subarray(at, at + n));
+      s = this.decoder.decode(this.bytes.subarray(at, at + n));
     } catch {
       throw new CorruptSnapshot('bad UTF-8 string');
     }

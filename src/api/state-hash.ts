@@ -1,15 +1,14 @@
 import { S } from '../store/body-store';
 import type { World } from './world';
 
-const f64 = new Float64Array(1);
-const u32 = new Uint32Array(f64.buffer);
-
 /**
  * 32-bit FNV-1a hash over the exact bits of every live body's transform and velocity, in slot order.
  * Two worlds with the same hash are, for all practical purposes, bit-identical.
  */
 export function stateHash(world: World): number {
   const bodies = world.core.bodies;
+  const f64 = new Float64Array(1);
+  const u32 = new Uint32Array(f64.buffer);
   let h = 0x811c9dc5;
   const mix = (x: number) => {
     f64[0] = x;

@@ -74,7 +74,7 @@ export interface PairAdmission {
   admit(shape: number, out: IntList, from: number): void;
 }
 
-const ADMIT_ALL: PairAdmission = {
+const ADMIT_ALL: PairAdmission = Object.freeze({
   begin: () => SearchMode.OPEN,
   counts: () => false,
   block() {},
@@ -83,7 +83,7 @@ const ADMIT_ALL: PairAdmission = {
   searchBox: () => false,
   isNear: () => true,
   admit() {},
-};
+});
 
 /** @internal Axis-aligned boxes stored by column (the shape store's tight boxes). */
 export interface BoxColumns {
@@ -92,15 +92,6 @@ export interface BoxColumns {
   readonly maxX: Float64Array;
   readonly maxY: Float64Array;
 }
-
-/** the box `query` hands to `queryBox`, and the fat box `moveProxy` hands to the tree */
-const queryScratch = new Float64Array(4);
-const moveScratch = new Float64Array(4);
-/** the box a search looks in when PairAdmission.searchBox narrows it */
-const nearScratch = new Float64Array(4);
-
-/** A displacement of zero, for `moveProxy` callers that expect none. Read only. */
-export const NO_MOTION = new Float64Array(2);
 
 /**
  * How many steps' displacement a moving proxy's fat box reaches ahead (2: a chain's swing, a
@@ -145,6 +136,15 @@ export class BroadPhase {
   private searchNear = false;
   private searchFull = false;
   private searchCrowded = false;
+  // Working memory, not state: private (#) fields are no property keys, so the snapshot, which writes
+  // a world's objects key by key, leaves them out (a query must leave no trace in it).
+  /** the box `query` hands to `queryBox`, and the fat box `moveProxy` hands to the tree */
+  #queryBox = new Float64Array(4);
+  #fatBox = new Float64Array(4);
+  /** the box a search looks in when PairAdmission.searchBox narrows it */
+  #nearBox = new Float64Array(4);
+  /** the displacement placeProxy passes: zero, never written */
+  readonly #noMotion = new Float64Array(2);
 
   constructor(private readonly aabbMargin: number) {}
 
@@ -220,7 +220,7 @@ export class BroadPhase {
 
   /**
    * Takes the proxy's new tight box, entry `i` of `boxes`, and its expected displacement over the next
-   * step, (motion[0], motion[1]) (NO_MOTION when unknown). The fat box is the tight box grown by the
+   * step, (motion[0], motion[1]) (placeProxy when unknown). The fat box is the tight box grown by the
    * margin and stretched MotionAhead.FACTOR times the displacement ahead, so that a fast body leaves it and
    * looks for pairs every few steps rather than every step (a swinging 100-link chain: 62 to 25 proxies
    * a step; 500 tumbling boxes: 128 to 81). Returns false (and does nothing) while the stored fat box
@@ -262,15 +262,24 @@ export class BroadPhase {
     ) {
       return false;
     }
-    moveScratch[0] = fatMinX;
-    moveScratch[1] = fatMinY;
-    moveScratch[2] = fatMaxX;
-    moveScratch[3] = fatMaxY;
+    const fat = this.#fatBox;
+    fat[0] = fatMinX;
+    fat[1] = fatMinY;
+    fat[2] = fatMaxX;
+    fat[3] = fatMaxY;
     // moving proxies are re-placed together at the next updatePairs (see DynamicTree.settleMoves)
-    if (type === ProxyType.STATIC) tree.moveProxy(id, moveScratch, 0);
-    else tree.enlargeProxy(id, moveScratch, 0);
+    if (type === ProxyType.STATIC) tree.moveProxy(id, fat, 0);
+    else tree.enlargeProxy(id, fat, 0);
     this.bufferMove(key);
     return true;
+  }
+
+  /**
+   * As moveProxy, for a proxy whose displacement over the next step is not known (a body placed by
+   * the user, a bullet moved back): its fat box reaches no further ahead than the margin.
+   */
+  placeProxy(key: number, boxes: BoxColumns, i: number): boolean {
+    return this.moveProxy(key, boxes, i, this.#noMotion);
   }
 
   /** Whether the next `updatePairs` looks for new pairs of this proxy. */
@@ -303,6 +312,7 @@ export class BroadPhase {
     admission: PairAdmission = ADMIT_ALL,
   ): void {
     for (let type = 0; type < 3; type++) this.trees[type].settleMoves();
+    const nearBox = this.#nearBox;
     const start = out.length;
     const buffer = this.moveBuffer;
     const budget = this.searchBudget;
@@ -316,8 +326,8 @@ export class BroadPhase {
       const tree = this.trees[type];
       const shapeId = tree.getUserData(id);
       const from = out.length;
-      const near = admission.searchBox(shapeId, nearScratch);
-      const boxes = near ? nearScratch : tree.boxes;
+      const near = admission.searchBox(shapeId, nearBox);
+      const boxes = near ? nearBox : tree.boxes;
       const at = near ? 0 : 4 * id;
       this.searchNear = near;
       const mode = admission.begin(shapeId);
@@ -381,7 +391,7 @@ export class BroadPhase {
 
   /** Appends the shape ids of proxies overlapping the box, from trees whose bit (1 << type) is in typeMask. */
   query(minX: number, minY: number, maxX: number, maxY: number, typeMask: number, out: IntList): void {
-    const q = queryScratch;
+    const q = this.#queryBox;
     q[0] = minX;
     q[1] = minY;
     q[2] = maxX;

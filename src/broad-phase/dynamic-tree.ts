@@ -33,13 +33,6 @@ enum Refit {
 }
 
 /**
- * The walks' stacks, shared by every tree: scratch, not a tree's state, so that a world's queries
- * leave no trace in its snapshot. (A ray-cast visitor may query, which is why the two are apart.)
- */
-let queryStack: Int32Array = new Int32Array(64);
-let rayStack: Int32Array = new Int32Array(64);
-
-/**
  * Dynamic AABB tree. Nodes live in typed arrays (structure of arrays) indexed by node id; a proxy id is
  * the id of its leaf and stays valid until destroyed. Insertion picks the sibling by a perimeter cost
  * (the 2D surface-area heuristic). On the way back up, every ancestor is rebalanced by tree rotations
@@ -75,6 +68,14 @@ export class DynamicTree {
   private isMoved: Uint8Array;
   /** the tree's shape (see refitAll) right after its last rebuild (0: not known yet) */
   private builtShape = 0;
+  /**
+   * The walks' stacks: working memory, not the tree's state. Private (#) fields are no property keys,
+   * so the snapshot, which writes a world's objects key by key, neither writes nor restores them: a
+   * query leaves no trace in a world's snapshot. (A ray-cast visitor may query, which is why the two
+   * are apart.)
+   */
+  #queryStack: Int32Array = new Int32Array(64);
+  #rayStack: Int32Array = new Int32Array(64);
 
   constructor(initialCapacity = 16) {
     const capacity = Math.max(2, initialCapacity);
@@ -254,8 +255,8 @@ export class DynamicTree {
     const minY = boxes[at + 1];
     const maxX = boxes[at + 2];
     const maxY = boxes[at + 3];
-    const stack = this.stackFor(queryStack);
-    queryStack = stack;
+    const stack = this.stackFor(this.#queryStack);
+    this.#queryStack = stack;
     const box = this.box;
     const child1 = this.child1;
     const child2 = this.child2;
@@ -289,8 +290,8 @@ export class DynamicTree {
     visitor: TreeRayCastVisitor,
   ): number {
     if (this.root === Node.NULL) return maxFraction;
-    const stack = this.stackFor(rayStack);
-    rayStack = stack;
+    const stack = this.stackFor(this.#rayStack);
+    this.#rayStack = stack;
     // Separating axis perpendicular to the segment: |n·(origin - center)| > |n|·halfExtents culls a box.
     const nx = -translationY;
     const ny = translationX;

@@ -36,11 +36,12 @@ export function packedBounds(data: Float64Array, base: number, xf: Transform, ou
   out.maxY = maxY + py + r;
 }
 
-const scratch = new Float64Array(Pack.STRIDE);
-
-/** @internal Tight world AABB of `g` placed at `xf`, including its radius. */
-export function computeShapeBounds(g: Geometry, xf: Transform, out: Bounds): Bounds {
-  packGeometry(g, scratch, 0);
-  packedBounds(scratch, 0, xf, out);
+/**
+ * @internal Tight world AABB of `g` placed at `xf`, including its radius; `packed` (Pack.STRIDE
+ * numbers) is the caller's scratch for the packed shape.
+ */
+export function computeShapeBounds(g: Geometry, xf: Transform, out: Bounds, packed: Float64Array): Bounds {
+  packGeometry(g, packed, 0);
+  packedBounds(packed, 0, xf, out);
   return out;
 }

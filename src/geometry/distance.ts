@@ -1,6 +1,13 @@
 import type { Transform } from '../math/vec2';
 import type { ShapeProxy } from './shape-proxy';
-import { loadRelativeB, relB, simplex, solveSimplex, support } from './simplex';
+import {
+  type GjkMemory,
+  loadRelativeB,
+  type RelativePoints,
+  type Simplex,
+  solveSimplex,
+  support,
+} from './simplex';
 
 /** Result of `shapeDistance`; points are in world coordinates. */
 export interface DistanceOutput {
@@ -41,9 +48,10 @@ const EPSILON_SQ = 1e-30;
  * Closest points between two convex shapes by GJK on their core point clouds.
  * With `useRadii` the result is for the rounded shapes: the points move out to the surfaces and the
  * distance drops by both radii. When the rounded shapes overlap, both points are the midpoint between
- * the two surfaces and the distance is 0. Allocation free; uses module scratch, not re-entrant.
+ * the two surfaces and the distance is 0. Allocation free: `memory` is its working memory.
  */
 export function shapeDistance(
+  memory: GjkMemory,
   proxyA: ShapeProxy,
   xfA: Transform,
   proxyB: ShapeProxy,
@@ -51,11 +59,11 @@ export function shapeDistance(
   useRadii: boolean,
   out: DistanceOutput,
 ): DistanceOutput {
-  loadRelativeB(xfA, proxyB, xfB);
-  out.iterations = runGjk(proxyA);
+  const s = memory.simplex;
+  loadRelativeB(memory.relB, xfA, proxyB, xfB);
+  out.iterations = runGjk(s, proxyA, memory.relB);
 
   // witness points and normal in the frame of A
-  const s = simplex;
   const v1 = s.v1;
   const v2 = s.v2;
   const v3 = s.v3;
@@ -136,10 +144,9 @@ export function shapeDistance(
 
 /**
  * GJK on the Minkowski difference B - A (A's points from the proxy, B's from `relB`), leaving the
- * simplex of the point closest to the origin in `simplex`. Returns the iteration count.
+ * simplex of the point closest to the origin in `s`. Returns the iteration count.
  */
-function runGjk(proxyA: ShapeProxy): number {
-  const s = simplex;
+function runGjk(s: Simplex, proxyA: ShapeProxy, relB: RelativePoints): number {
   const axs = proxyA.x;
   const ays = proxyA.y;
   const na = proxyA.count;

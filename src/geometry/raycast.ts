@@ -9,11 +9,11 @@ import { type Geometry, type Polygon, type RayHit, ShapeKind } from './types';
  * - A tangent (grazing) ray counts as a hit, at the touching point.
  * - Segments are two-sided: the normal faces the ray's origin. A ray along a segment's line hits
  *   its nearer end (or fraction 0 when the origin is on it), with the normal against the ray.
- * The cast runs in the shape's local frame; fraction and point come from the world ray.
+ * The cast runs in the shape's local frame; fraction and point come from the world ray. The casts
+ * below keep the best hit so far in the caller's RayHit (fraction and normal, in the local frame);
+ * rayCastGeometry turns it to the world frame. They write it only with a hit, so a miss leaves it as
+ * it was.
  */
-
-/** Best hit of the current cast in the local frame: fraction, normal x, normal y (typed: no boxing). */
-const hit = new Float64Array(3);
 
 /** Ray against a disc; updates the hit when it is earlier than `best`. Origin must not be inside. */
 function castDisc(
@@ -25,6 +25,7 @@ function castDisc(
   dx: number,
   dy: number,
   best: number,
+  hit: RayHit,
 ): boolean {
   const mx = ox - cx;
   const my = oy - cy;
@@ -41,9 +42,9 @@ function castDisc(
   const nx = mx + t * dx;
   const ny = my + t * dy;
   const length = Math.sqrt(nx * nx + ny * ny);
-  hit[0] = t;
-  hit[1] = nx / length;
-  hit[2] = ny / length;
+  hit.fraction = t;
+  hit.normalX = nx / length;
+  hit.normalY = ny / length;
   return true;
 }
 
@@ -61,6 +62,7 @@ function castOffsetEdge(
   dx: number,
   dy: number,
   best: number,
+  hit: RayHit,
 ): boolean {
   const den = nx * dx + ny * dy;
   if (!(den < 0)) return false;
@@ -70,9 +72,9 @@ function castOffsetEdge(
   const ey = v2y - v1y;
   const along = (ox + t * dx - v1x) * ex + (oy + t * dy - v1y) * ey;
   if (along < 0 || along > ex * ex + ey * ey) return false;
-  hit[0] = t;
-  hit[1] = nx;
-  hit[2] = ny;
+  hit.fraction = t;
+  hit.normalX = nx;
+  hit.normalY = ny;
   return true;
 }
 
@@ -107,7 +109,7 @@ function polygonDistanceSq(g: Polygon, px: number, py: number): number {
 }
 
 /** Sharp polygon: clip the ray against every edge's half plane; the last entering edge gives the normal. */
-function castSharpPolygon(g: Polygon, ox: number, oy: number, dx: number, dy: number): boolean {
+function castSharpPolygon(g: Polygon, ox: number, oy: number, dx: number, dy: number, hit: RayHit): boolean {
   let lower = 0;
   let upper = 1;
   let edge = -1;
@@ -130,14 +132,21 @@ function castSharpPolygon(g: Polygon, ox: number, oy: number, dx: number, dy: nu
   }
   // no entering edge ahead of the origin: the origin is inside
   if (edge < 0) return false;
-  hit[0] = lower;
-  hit[1] = g.normals[edge].x;
-  hit[2] = g.normals[edge].y;
+  hit.fraction = lower;
+  hit.normalX = g.normals[edge].x;
+  hit.normalY = g.normals[edge].y;
   return true;
 }
 
 /** Rounded polygon: offset edges within their extents, and a disc at every vertex. */
-function castRoundedPolygon(g: Polygon, ox: number, oy: number, dx: number, dy: number): boolean {
+function castRoundedPolygon(
+  g: Polygon,
+  ox: number,
+  oy: number,
+  dx: number,
+  dy: number,
+  hit: RayHit,
+): boolean {
   const r = g.radius;
   if (polygonDistanceSq(g, ox, oy) < r * r) return false;
   const v = g.vertices;
@@ -145,13 +154,23 @@ function castRoundedPolygon(g: Polygon, ox: number, oy: number, dx: number, dy: 
   for (let i = 0; i < g.count; i++) {
     const j = i + 1 === g.count ? 0 : i + 1;
     const n = g.normals[i];
-    if (castOffsetEdge(v[i].x, v[i].y, v[j].x, v[j].y, n.x, n.y, r, ox, oy, dx, dy, best)) best = hit[0];
-    if (castDisc(v[i].x, v[i].y, r, ox, oy, dx, dy, best)) best = hit[0];
+    if (castOffsetEdge(v[i].x, v[i].y, v[j].x, v[j].y, n.x, n.y, r, ox, oy, dx, dy, best, hit))
+      best = hit.fraction;
+    if (castDisc(v[i].x, v[i].y, r, ox, oy, dx, dy, best, hit)) best = hit.fraction;
   }
   return best <= 1;
 }
 
-function castCapsule(a: Vec2, b: Vec2, r: number, ox: number, oy: number, dx: number, dy: number): boolean {
+function castCapsule(
+  a: Vec2,
+  b: Vec2,
+  r: number,
+  ox: number,
+  oy: number,
+  dx: number,
+  dy: number,
+  hit: RayHit,
+): boolean {
   if (segmentDistanceSq(a.x, a.y, b.x, b.y, ox, oy) < r * r) return false;
   const ex = b.x - a.x;
   const ey = b.y - a.y;
@@ -159,14 +178,14 @@ function castCapsule(a: Vec2, b: Vec2, r: number, ox: number, oy: number, dx: nu
   const nx = ey / length;
   const ny = -ex / length;
   let best = Number.POSITIVE_INFINITY;
-  if (castOffsetEdge(a.x, a.y, b.x, b.y, nx, ny, r, ox, oy, dx, dy, best)) best = hit[0];
-  if (castOffsetEdge(b.x, b.y, a.x, a.y, -nx, -ny, r, ox, oy, dx, dy, best)) best = hit[0];
-  if (castDisc(a.x, a.y, r, ox, oy, dx, dy, best)) best = hit[0];
-  if (castDisc(b.x, b.y, r, ox, oy, dx, dy, best)) best = hit[0];
+  if (castOffsetEdge(a.x, a.y, b.x, b.y, nx, ny, r, ox, oy, dx, dy, best, hit)) best = hit.fraction;
+  if (castOffsetEdge(b.x, b.y, a.x, a.y, -nx, -ny, r, ox, oy, dx, dy, best, hit)) best = hit.fraction;
+  if (castDisc(a.x, a.y, r, ox, oy, dx, dy, best, hit)) best = hit.fraction;
+  if (castDisc(b.x, b.y, r, ox, oy, dx, dy, best, hit)) best = hit.fraction;
   return best <= 1;
 }
 
-function castSegment(a: Vec2, b: Vec2, ox: number, oy: number, dx: number, dy: number): boolean {
+function castSegment(a: Vec2, b: Vec2, ox: number, oy: number, dx: number, dy: number, hit: RayHit): boolean {
   const ex = b.x - a.x;
   const ey = b.y - a.y;
   const fx = a.x - ox;
@@ -182,9 +201,9 @@ function castSegment(a: Vec2, b: Vec2, ox: number, oy: number, dx: number, dy: n
     const last = Math.max(t1, t2);
     if (last < 0 || first > 1) return false;
     const length = Math.sqrt(dd);
-    hit[0] = Math.max(first, 0);
-    hit[1] = -dx / length;
-    hit[2] = -dy / length;
+    hit.fraction = Math.max(first, 0);
+    hit.normalX = -dx / length;
+    hit.normalY = -dy / length;
     return true;
   }
   const t = (fx * ey - fy * ex) / den;
@@ -192,9 +211,9 @@ function castSegment(a: Vec2, b: Vec2, ox: number, oy: number, dx: number, dy: n
   if (t < 0 || t > 1 || s < 0 || s > 1) return false;
   const length = Math.sqrt(ex * ex + ey * ey);
   const sign = ey * dx - ex * dy > 0 ? -1 : 1; // normal (ey, -ex) turned against the ray
-  hit[0] = t;
-  hit[1] = (sign * ey) / length;
-  hit[2] = (-sign * ex) / length;
+  hit.fraction = t;
+  hit.normalX = (sign * ey) / length;
+  hit.normalY = (-sign * ex) / length;
   return true;
 }
 
@@ -225,21 +244,23 @@ export function rayCastGeometry(
     const my = oy - g.center.y;
     found =
       mx * mx + my * my >= g.radius * g.radius &&
-      castDisc(g.center.x, g.center.y, g.radius, ox, oy, dx, dy, 2);
+      castDisc(g.center.x, g.center.y, g.radius, ox, oy, dx, dy, 2, out);
   } else if (g.kind === ShapeKind.CAPSULE) {
-    found = castCapsule(g.center1, g.center2, g.radius, ox, oy, dx, dy);
+    found = castCapsule(g.center1, g.center2, g.radius, ox, oy, dx, dy, out);
   } else if (g.kind === ShapeKind.POLYGON) {
-    found = g.radius > 0 ? castRoundedPolygon(g, ox, oy, dx, dy) : castSharpPolygon(g, ox, oy, dx, dy);
+    found =
+      g.radius > 0 ? castRoundedPolygon(g, ox, oy, dx, dy, out) : castSharpPolygon(g, ox, oy, dx, dy, out);
   } else {
-    found = castSegment(g.point1, g.point2, ox, oy, dx, dy);
+    found = castSegment(g.point1, g.point2, ox, oy, dx, dy, out);
   }
   if (!found) return false;
-  const fraction = hit[0];
-  out.fraction = fraction;
+  const fraction = out.fraction;
+  const nx = out.normalX;
+  const ny = out.normalY;
   out.pointX = originX + fraction * translationX;
   out.pointY = originY + fraction * translationY;
-  out.normalX = c * hit[1] - s * hit[2];
-  out.normalY = s * hit[1] + c * hit[2];
+  out.normalX = c * nx - s * ny;
+  out.normalY = s * nx + c * ny;
   return true;
 }
 

@@ -1,6 +1,14 @@
 import { makeTransform, type Transform } from '../math/vec2';
 import { makeShapeProxy, type ShapeProxy } from './shape-proxy';
-import { loadRelativeB, relB, type SimplexVertex, simplex, solveSimplex, support, vertexAt } from './simplex';
+import {
+  type GjkMemory,
+  loadRelativeB,
+  type Simplex,
+  type SimplexVertex,
+  solveSimplex,
+  support,
+  vertexAt,
+} from './simplex';
 
 /** Shape B, placed by transformB, moves by the world translation against shape A (placed by transformA). */
 export interface ShapeCastInput {
@@ -54,12 +62,13 @@ const TOLERANCE = 1e-10;
  * inflated C, so the fraction is approached from below and is exact for flat faces.
  *
  * Rule for shapes that already overlap or touch at the start: hit, fraction 0, normal (0, 0), point
- * halfway between the closest core points. Allocation free; module scratch, not re-entrant.
+ * halfway between the closest core points. Allocation free: `memory` is its working memory.
  */
-export function shapeCast(input: ShapeCastInput, out: ShapeCastOutput): ShapeCastOutput {
+export function shapeCast(memory: GjkMemory, input: ShapeCastInput, out: ShapeCastOutput): ShapeCastOutput {
   const proxyA = input.proxyA;
   const xfA = input.transformA;
-  loadRelativeB(xfA, input.proxyB, input.transformB);
+  const relB = memory.relB;
+  loadRelativeB(relB, xfA, input.proxyB, input.transformB);
   const axs = proxyA.x;
   const ays = proxyA.y;
   const na = proxyA.count;
@@ -76,7 +85,7 @@ export function shapeCast(input: ShapeCastInput, out: ShapeCastOutput): ShapeCas
   const tolerance = TOLERANCE * (1 + radius + Math.sqrt(rx * rx + ry * ry));
   const maxFraction = input.maxFraction;
 
-  const s = simplex;
+  const s = memory.simplex;
   setVertex(s.v1, axs, ays, support(axs, ays, na, -rx, -ry), bxs, bys, support(bxs, bys, nb, rx, ry));
   s.count = 1;
 
@@ -117,7 +126,7 @@ export function shapeCast(input: ShapeCastInput, out: ShapeCastOutput): ShapeCas
     const iB = support(bxs, bys, nb, -ux, -uy);
     const px = axs[iA] - bxs[iB];
     const py = ays[iA] - bys[iB];
-    const known = hasVertex(iA, iB);
+    const known = hasVertex(s, iA, iB);
     // how far x is in front of the supporting plane of the inflated C, times |u|
     const gap = ux * (xx - px) + uy * (xy - py) - radius * dist;
     if (gap > 0) {
@@ -199,8 +208,7 @@ function setVertex(
   v.by = bys[iB];
 }
 
-function hasVertex(iA: number, iB: number): boolean {
-  const s = simplex;
+function hasVertex(s: Simplex, iA: number, iB: number): boolean {
   for (let i = 0; i < s.count; i++) {
     const v = vertexAt(s, i);
     if (v.indexA === iA && v.indexB === iB) {

@@ -74,7 +74,7 @@ function checkApart(p1: Vec2, p2: Vec2, value: unknown): void {
 }
 
 /** Factories of immutable geometry in a body's local frame. Every argument is validated. */
-export const Shape = {
+export const Shape = Object.freeze({
   circle(radius: number, center?: Vec2): Circle {
     checkSize('radius', radius);
     return Object.freeze({
@@ -165,4 +165,4 @@ export const Shape = {
       point2: Object.freeze(b),
     });
   },
-};
+});

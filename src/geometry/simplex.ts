@@ -5,7 +5,7 @@ import { MAX_POLYGON_VERTICES } from './types';
 /**
  * Shared machinery of GJK (distance.ts) and the GJK ray cast (shape-cast.ts). Everything is done in
  * the local frame of shape A, which keeps precision when both shapes are far from the world origin.
- * The scratch objects below are module state: these functions are not re-entrant.
+ * Their working memory is a GjkMemory the caller owns and passes in.
  */
 
 /** A vertex of the simplex: support points of A and B, the simplex point w and its barycentric weight. */
@@ -28,17 +28,30 @@ export class Simplex {
   count = 0;
 }
 
-export const simplex = new Simplex();
-
 /** Points of proxy B expressed in the frame of A, filled by `loadRelativeB`. */
-export const relB = {
-  x: new Float64Array(MAX_POLYGON_VERTICES),
-  y: new Float64Array(MAX_POLYGON_VERTICES),
-  count: 0,
-};
+export class RelativePoints {
+  readonly x = new Float64Array(MAX_POLYGON_VERTICES);
+  readonly y = new Float64Array(MAX_POLYGON_VERTICES);
+  count = 0;
+}
+
+/**
+ * The working memory of one GJK call (shapeDistance, shapeCast): written before it is read, so one
+ * instance serves any number of calls made one after the other. Its owner passes it in (a world
+ * keeps its own), so that calls for different owners share nothing.
+ */
+export class GjkMemory {
+  readonly simplex = new Simplex();
+  readonly relB = new RelativePoints();
+}
 
 /** Write the points of proxy B, placed by xfB, into `relB` in the frame of A (placed by xfA). */
-export function loadRelativeB(xfA: Transform, proxyB: ShapeProxy, xfB: Transform): void {
+export function loadRelativeB(
+  relB: RelativePoints,
+  xfA: Transform,
+  proxyB: ShapeProxy,
+  xfB: Transform,
+): void {
   const ac = xfA.q.c;
   const as = xfA.q.s;
   const bc = xfB.q.c;

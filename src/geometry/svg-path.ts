@@ -54,7 +54,7 @@ const QUADRATIC = 2;
 /** The command letters, absolute and relative, and how many arguments each takes. */
 const ABSOLUTE = 'MLHVCSQTAZ';
 const RELATIVE = 'mlhvcsqtaz';
-const ARGUMENT_COUNTS = [2, 2, 1, 1, 6, 4, 4, 2, 7, 0];
+const ARGUMENT_COUNTS: readonly number[] = [2, 2, 1, 1, 6, 4, 4, 2, 7, 0];
 
 /**
  * Parses SVG path data (`M L H V C S Q T A Z`, absolute and relative, as in a `<path d="…">`) into one

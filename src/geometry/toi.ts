@@ -1,6 +1,7 @@
 import { makeTransform, type Transform } from '../math/vec2';
-import { type DistanceOutput, makeDistanceOutput, shapeDistance } from './distance';
+import { makeDistanceOutput, shapeDistance } from './distance';
 import type { ShapeProxy } from './shape-proxy';
+import { GjkMemory } from './simplex';
 import { getSweepTransform, type Sweep, sweepAngularBound } from './sweep';
 import { MAX_POLYGON_VERTICES } from './types';
 
@@ -30,17 +31,24 @@ const DEFAULT_LINEAR_SLOP = 0.005;
 /** Each iteration costs one GJK call; grazing passes of fast spinning bodies take the most. */
 const MAX_ITERATIONS = 50;
 
-const xfA = makeTransform();
-const xfB = makeTransform();
-const distance: DistanceOutput = makeDistanceOutput();
-// per core point, at the current fraction: projection on n, and |n . perp(u)|, |n . u| where u is the
-// point's offset from its body's centre of mass
-const projA = new Float64Array(MAX_POLYGON_VERTICES);
-const perpA = new Float64Array(MAX_POLYGON_VERTICES);
-const alongA = new Float64Array(MAX_POLYGON_VERTICES);
-const projB = new Float64Array(MAX_POLYGON_VERTICES);
-const perpB = new Float64Array(MAX_POLYGON_VERTICES);
-const alongB = new Float64Array(MAX_POLYGON_VERTICES);
+/**
+ * The working memory of timeOfImpact: written before it is read, so one instance serves any number
+ * of calls made one after the other. Its owner passes it in (a world keeps its own).
+ */
+export class TOIMemory {
+  readonly gjk = new GjkMemory();
+  readonly xfA = makeTransform();
+  readonly xfB = makeTransform();
+  readonly distance = makeDistanceOutput();
+  // per core point, at the current fraction: projection on n, and |n . perp(u)|, |n . u| where u is
+  // the point's offset from its body's centre of mass
+  readonly projA = new Float64Array(MAX_POLYGON_VERTICES);
+  readonly perpA = new Float64Array(MAX_POLYGON_VERTICES);
+  readonly alongA = new Float64Array(MAX_POLYGON_VERTICES);
+  readonly projB = new Float64Array(MAX_POLYGON_VERTICES);
+  readonly perpB = new Float64Array(MAX_POLYGON_VERTICES);
+  readonly alongB = new Float64Array(MAX_POLYGON_VERTICES);
+}
 
 /**
  * Time of impact by conservative advancement (Catto, "Continuous Collision", GDC 2013), with a
@@ -63,7 +71,22 @@ const alongB = new Float64Array(MAX_POLYGON_VERTICES);
  * - 'failed': out of iterations (grazing motion); fraction is still safe, the shapes are at least
  *   target apart there, so treating it as a hit is conservative.
  */
-export function timeOfImpact(input: TOIInput, out: TOIOutput, linearSlop = DEFAULT_LINEAR_SLOP): TOIOutput {
+export function timeOfImpact(
+  memory: TOIMemory,
+  input: TOIInput,
+  out: TOIOutput,
+  linearSlop = DEFAULT_LINEAR_SLOP,
+): TOIOutput {
+  const gjk = memory.gjk;
+  const xfA = memory.xfA;
+  const xfB = memory.xfB;
+  const distance = memory.distance;
+  const projA = memory.projA;
+  const perpA = memory.perpA;
+  const alongA = memory.alongA;
+  const projB = memory.projB;
+  const perpB = memory.perpB;
+  const alongB = memory.alongB;
   const proxyA = input.proxyA;
   const proxyB = input.proxyB;
   const sweepA = input.sweepA;
@@ -83,7 +106,7 @@ export function timeOfImpact(input: TOIInput, out: TOIOutput, linearSlop = DEFAU
     out.iterations = iter + 1;
     getSweepTransform(sweepA, t, xfA);
     getSweepTransform(sweepB, t, xfB);
-    shapeDistance(proxyA, xfA, proxyB, xfB, false, distance);
+    shapeDistance(gjk, proxyA, xfA, proxyB, xfB, false, distance);
     const separation = distance.distance - totalRadius;
 
     if (separation < target + tolerance) {

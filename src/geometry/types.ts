@@ -129,12 +129,12 @@ export function makeRayHit(): RayHit {
   return { fraction: 0, pointX: 0, pointY: 0, normalX: 0, normalY: 0 };
 }
 
-const KIND_OF_TYPE: Record<string, number> = {
+const KIND_OF_TYPE: Readonly<Record<string, number>> = Object.freeze({
   circle: ShapeKind.CIRCLE,
   capsule: ShapeKind.CAPSULE,
   segment: ShapeKind.SEGMENT,
   polygon: ShapeKind.POLYGON,
-};
+});
 
 /** How far from the body's origin a vertex of Shape's may lie: a box of the largest size and offset, turned. */
 const VERTEX_BOUND = 4 * Limits.COORDINATE;

@@ -1,19 +1,12 @@
 import type { World } from '../api/world';
-import { IntList } from '../broad-phase/int-list';
 import { computeShapeBounds } from '../geometry/bounds';
-import { makeShapeCastInput, makeShapeCastOutput, shapeCast } from '../geometry/shape-cast';
+import { shapeCast } from '../geometry/shape-cast';
 import { makeProxy } from '../geometry/shape-proxy';
-import { makeBounds } from '../math/aabb';
 import { checkGeometry, checkPoint, resolveTransform } from './args';
-import { makeResolvedQueryFilter, passesQueryFilter, resolveQueryFilter } from './filter';
+import { passesQueryFilter, resolveQueryFilter } from './filter';
 import { type CastHit, makeCastHit } from './hit';
 
 const ALL_TREES = 7;
-const filter = makeResolvedQueryFilter();
-const found = new IntList(64);
-const input = makeShapeCastInput();
-const output = makeShapeCastOutput();
-const bounds = makeBounds();
 
 /**
  * Moves `geometry` from `transform` along `translation` (no rotation) and returns the first shape it
@@ -29,15 +22,21 @@ export function castShape(
   translation: unknown,
   queryFilter?: unknown,
 ): CastHit | null {
+  const core = world.core;
+  const m = world.handles.queryMemory;
+  const input = m.castInput;
+  const output = m.castOutput;
+  const filter = m.filter;
+  const found = m.found;
+  const bounds = m.bounds;
   const g = checkGeometry('geometry', geometry);
   resolveTransform('transform', transform, input.transformB);
   const t = checkPoint('translation', translation);
   const tx = t.x;
   const ty = t.y;
   resolveQueryFilter(queryFilter, false, filter);
-  const core = world.core;
   const shapes = core.shapes;
-  computeShapeBounds(g, input.transformB, bounds);
+  computeShapeBounds(g, input.transformB, bounds, m.packed);
   found.clear();
   core.broadPhase.query(
     bounds.minX + Math.min(tx, 0),
@@ -62,7 +61,7 @@ export function castShape(
     makeProxy(shapes.geometry[s]!, input.proxyA);
     core.fillTransform(shapes.body[s], input.transformA);
     input.maxFraction = fraction;
-    shapeCast(input, output);
+    shapeCast(m.gjk, input, output);
     if (!output.hit) continue;
     const f = output.fraction;
     if (best === -1 || f < fraction || (f === fraction && s < best)) {

@@ -1,16 +1,14 @@
 import type { ShapeHandle } from '../api/shape';
 import type { World } from '../api/world';
-import { IntList } from '../broad-phase/int-list';
+import type { IntList } from '../broad-phase/int-list';
 import { checkKnownKeys, FulcrumError, fail } from '../core/errors';
 import { computeShapeBounds } from '../geometry/bounds';
-import { type DistanceOutput, makeDistanceOutput, shapeDistance } from '../geometry/distance';
+import { shapeDistance } from '../geometry/distance';
 import { testPoint } from '../geometry/raycast';
-import { makeProxy, makeShapeProxy } from '../geometry/shape-proxy';
+import { makeProxy } from '../geometry/shape-proxy';
 import type { AABB } from '../math/aabb';
-import { makeBounds } from '../math/aabb';
-import { makeTransform } from '../math/vec2';
 import { checkGeometry, checkPoint, resolveTransform } from './args';
-import { makeResolvedQueryFilter, passesQueryFilter, resolveQueryFilter } from './filter';
+import { passesQueryFilter, resolveQueryFilter } from './filter';
 
 /*
  * Overlap queries over the broad-phase trees (static, kinematic and dynamic, sleeping bodies
@@ -20,18 +18,9 @@ import { makeResolvedQueryFilter, passesQueryFilter, resolveQueryFilter } from '
 
 const ALL_TREES = 7;
 const AABB_KEYS = ['lowerBound', 'upperBound'] as const;
-const filter = makeResolvedQueryFilter();
-const found = new IntList(64);
-const selected = new IntList(64);
-const xf = makeTransform();
-const queryXf = makeTransform();
-const bounds = makeBounds();
-const proxyA = makeShapeProxy();
-const proxyB = makeShapeProxy();
-const distance: DistanceOutput = makeDistanceOutput();
 
 /** Handles of the selected slots, ascending. */
-function handles(world: World): ShapeHandle[] {
+function handles(world: World, selected: IntList): ShapeHandle[] {
   selected.sort();
   const result: ShapeHandle[] = new Array(selected.length);
   for (let i = 0; i < selected.length; i++) result[i] = world.handles.shapes[selected.data[i]]!;
@@ -54,8 +43,9 @@ export function queryAABB(world: World, aabb: unknown, queryFilter?: unknown): S
       `aabb.upperBound must not be below aabb.lowerBound, got lowerBound { x: ${minX}, y: ${minY} } and upperBound { x: ${maxX}, y: ${maxY} }`,
     );
   }
-  resolveQueryFilter(queryFilter, true, filter);
   const core = world.core;
+  const { filter, found, selected } = world.handles.queryMemory;
+  resolveQueryFilter(queryFilter, true, filter);
   const shapes = core.shapes;
   found.clear();
   selected.clear();
@@ -68,7 +58,7 @@ export function queryAABB(world: World, aabb: unknown, queryFilter?: unknown): S
       continue;
     selected.push(s);
   }
-  return handles(world);
+  return handles(world, selected);
 }
 
 /** Shapes that contain the point (inside or on the surface; segments contain nothing). */
@@ -76,8 +66,9 @@ export function queryPoint(world: World, point: unknown, queryFilter?: unknown):
   const p = checkPoint('point', point);
   const x = p.x;
   const y = p.y;
-  resolveQueryFilter(queryFilter, true, filter);
   const core = world.core;
+  const { filter, found, selected, xf } = world.handles.queryMemory;
+  resolveQueryFilter(queryFilter, true, filter);
   const shapes = core.shapes;
   found.clear();
   selected.clear();
@@ -87,7 +78,7 @@ export function queryPoint(world: World, point: unknown, queryFilter?: unknown):
     if (!passesQueryFilter(shapes, s, filter)) continue;
     if (testPoint(shapes.geometry[s]!, core.fillTransform(shapes.body[s], xf), x, y)) selected.push(s);
   }
-  return handles(world);
+  return handles(world, selected);
 }
 
 /** Shapes whose surface overlaps or touches `geometry` placed at `transform`. */
@@ -97,12 +88,14 @@ export function overlapShape(
   transform: unknown,
   queryFilter?: unknown,
 ): ShapeHandle[] {
+  const core = world.core;
+  const m = world.handles.queryMemory;
+  const { filter, found, selected, xf, queryXf, bounds, proxyA, proxyB, distance } = m;
   const g = checkGeometry('geometry', geometry);
   resolveTransform('transform', transform, queryXf);
   resolveQueryFilter(queryFilter, true, filter);
-  const core = world.core;
   const shapes = core.shapes;
-  computeShapeBounds(g, queryXf, bounds);
+  computeShapeBounds(g, queryXf, bounds, m.packed);
   found.clear();
   selected.clear();
   core.broadPhase.query(bounds.minX, bounds.minY, bounds.maxX, bounds.maxY, ALL_TREES, found);
@@ -111,8 +104,8 @@ export function overlapShape(
     const s = found.data[i];
     if (!passesQueryFilter(shapes, s, filter)) continue;
     makeProxy(shapes.geometry[s]!, proxyA);
-    shapeDistance(proxyA, core.fillTransform(shapes.body[s], xf), proxyB, queryXf, false, distance);
+    shapeDistance(m.gjk, proxyA, core.fillTransform(shapes.body[s], xf), proxyB, queryXf, false, distance);
     if (distance.distance <= proxyA.radius + proxyB.radius) selected.push(s);
   }
-  return handles(world);
+  return handles(world, selected);
 }

@@ -15,32 +15,35 @@ import { type CastHit, makeCastHit } from './hit';
  * Ties: among hits at the same fraction the smaller shape slot comes first.
  */
 
-const filter = makeResolvedQueryFilter();
-const hit = makeRayHit();
-const xf = makeTransform();
-
-/** Shared by both visitors: tests one shape against the current ray; on a hit fills `hit`. */
-function castShapeSlot(
-  core: WorldCore,
-  s: number,
-  originX: number,
-  originY: number,
-  translationX: number,
-  translationY: number,
-): boolean {
-  const shapes = core.shapes;
-  if (!passesQueryFilter(shapes, s, filter)) return false;
-  core.fillTransform(shapes.body[s], xf);
-  return rayCastGeometry(shapes.geometry[s]!, xf, originX, originY, translationX, translationY, hit);
-}
-
-/** Keeps the closest hit and clips the ray to it. */
-class ClosestVisitor implements BroadPhaseRayCastVisitor {
+/**
+ * What both visitors share: the ray, its filter, and the test of one shape against the ray. A world
+ * keeps one of each visitor (QueryMemory), set up by each cast.
+ */
+abstract class ShapeRayVisitor implements BroadPhaseRayCastVisitor {
   core: WorldCore | null = null;
   ox = 0;
   oy = 0;
   tx = 0;
   ty = 0;
+  readonly filter = makeResolvedQueryFilter();
+  /** the hit of the last shape tested */
+  readonly hit = makeRayHit();
+  readonly xf = makeTransform();
+
+  abstract rayCastProxy(proxyKey: number, s: number, maxFraction: number): number;
+
+  /** Tests shape `s` against the ray; on a hit fills `hit`. */
+  protected castShapeSlot(s: number): boolean {
+    const core = this.core!;
+    const shapes = core.shapes;
+    if (!passesQueryFilter(shapes, s, this.filter)) return false;
+    core.fillTransform(shapes.body[s], this.xf);
+    return rayCastGeometry(shapes.geometry[s]!, this.xf, this.ox, this.oy, this.tx, this.ty, this.hit);
+  }
+}
+
+/** Keeps the closest hit and clips the ray to it. */
+export class ClosestVisitor extends ShapeRayVisitor {
   slot = -1;
   fraction = 0;
   px = 0;
@@ -49,7 +52,8 @@ class ClosestVisitor implements BroadPhaseRayCastVisitor {
   ny = 0;
 
   rayCastProxy(_proxyKey: number, s: number, maxFraction: number): number {
-    if (!castShapeSlot(this.core!, s, this.ox, this.oy, this.tx, this.ty)) return -1;
+    if (!this.castShapeSlot(s)) return -1;
+    const hit = this.hit;
     const f = hit.fraction;
     if (f > maxFraction) return -1;
     if (this.slot === -1 || f < this.fraction || (f === this.fraction && s < this.slot)) {
@@ -65,18 +69,14 @@ class ClosestVisitor implements BroadPhaseRayCastVisitor {
 }
 
 /** Records every hit without clipping: per hit, slot and five numbers. */
-class AllVisitor implements BroadPhaseRayCastVisitor {
-  core: WorldCore | null = null;
-  ox = 0;
-  oy = 0;
-  tx = 0;
-  ty = 0;
+export class AllVisitor extends ShapeRayVisitor {
   count = 0;
   slots = new Int32Array(16);
   values = new Float64Array(16 * 5);
 
   rayCastProxy(_proxyKey: number, s: number, _maxFraction: number): number {
-    if (!castShapeSlot(this.core!, s, this.ox, this.oy, this.tx, this.ty)) return -1;
+    if (!this.castShapeSlot(s)) return -1;
+    const hit = this.hit;
     if (this.count === this.slots.length) {
       const slots = new Int32Array(this.count * 2);
       slots.set(this.slots);
@@ -97,9 +97,6 @@ class AllVisitor implements BroadPhaseRayCastVisitor {
   }
 }
 
-const closest = new ClosestVisitor();
-const all = new AllVisitor();
-
 /** The closest shape hit by the ray, or null. */
 export function castRay(
   world: World,
@@ -109,9 +106,9 @@ export function castRay(
 ): CastHit | null {
   const o = checkPoint('origin', origin);
   const t = checkPoint('translation', translation);
-  resolveQueryFilter(queryFilter, false, filter);
   const core = world.core;
-  const v = closest;
+  const v = world.handles.queryMemory.closest;
+  resolveQueryFilter(queryFilter, false, v.filter);
   v.core = core;
   v.ox = o.x;
   v.oy = o.y;
@@ -133,9 +130,9 @@ export function castRayAll(
 ): CastHit[] {
   const o = checkPoint('origin', origin);
   const t = checkPoint('translation', translation);
-  resolveQueryFilter(queryFilter, false, filter);
   const core = world.core;
-  const v = all;
+  const v = world.handles.queryMemory.all;
+  resolveQueryFilter(queryFilter, false, v.filter);
   v.core = core;
   v.ox = o.x;
   v.oy = o.y;

@@ -1,7 +1,7 @@
 import type { Body } from '../api/body';
 import type { Transform, Vec2 } from '../math/vec2';
 import { requireBrowser } from './browser';
-import { cssColor } from './color';
+import { CssColors } from './color';
 import type { Color, DebugDraw, ShapeStyle } from './debug-draw';
 
 /** An image drawn at a body's position and angle instead of (or over) its shapes. */
@@ -58,14 +58,15 @@ export class CanvasDebugDraw implements DebugDraw {
   private readonly lineBatches = new Map<string, Path2D>();
   private readonly pointBatches = new Map<string, Path2D>();
   private readonly sprites: QueuedSprite[] = [];
+  private readonly css = new CssColors();
 
   constructor(readonly context: CanvasRenderingContext2D) {
     requireBrowser('new CanvasDebugDraw()', 'Path2D');
   }
 
   private batch(style: ShapeStyle): ShapeBatch {
-    const fill = style.fill === null ? null : cssColor(style.fill, style.fillAlpha);
-    const stroke = cssColor(style.stroke);
+    const fill = style.fill === null ? null : this.css.get(style.fill, style.fillAlpha);
+    const stroke = this.css.get(style.stroke);
     const key = `${fill}|${stroke}`;
     let batch = this.shapeBatches.get(key);
     if (!batch) {
@@ -146,7 +147,7 @@ export class CanvasDebugDraw implements DebugDraw {
   }
 
   private lines(color: Color): Path2D {
-    const key = cssColor(color);
+    const key = this.css.get(color);
     let path = this.lineBatches.get(key);
     if (!path) {
       path = new Path2D();
@@ -162,7 +163,7 @@ export class CanvasDebugDraw implements DebugDraw {
   }
 
   drawPoint(p: Vec2, size: number, color: Color): void {
-    const key = cssColor(color);
+    const key = this.css.get(color);
     let path = this.pointBatches.get(key);
     if (!path) {
       path = new Path2D();

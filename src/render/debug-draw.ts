@@ -138,11 +138,6 @@ export function defaultBodyColor(world: World, body: Body): Color {
   return dynamicPalette[b % dynamicPalette.length];
 }
 
-const drawnXf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
-const pA: Vec2 = { x: 0, y: 0 };
-const pB: Vec2 = { x: 0, y: 0 };
-const pC: Vec2 = { x: 0, y: 0 };
-
 /** Fills `xf` with where a body is drawn. */
 function drawnTransform(world: World, body: Body, options: DrawWorldOptions | undefined, xf: Transform) {
   if (options?.transformOf) return options.transformOf(body, xf);
@@ -157,9 +152,16 @@ function drawnTransform(world: World, body: Body, options: DrawWorldOptions | un
 
 /**
  * Maps a world point on body `b` (as the body is now) to where it is drawn: identical unless the
- * renderer draws bodies elsewhere, as interpolation does.
+ * renderer draws bodies elsewhere, as interpolation does (its transform is then written in `drawnXf`).
  */
-function mapPoint(world: World, body: Body, options: DrawWorldOptions | undefined, p: Vec2, out: Vec2): Vec2 {
+function mapPoint(
+  world: World,
+  body: Body,
+  options: DrawWorldOptions | undefined,
+  p: Vec2,
+  out: Vec2,
+  drawnXf: Transform,
+): Vec2 {
   if (!options?.transformOf) {
     out.x = p.x;
     out.y = p.y;
@@ -185,6 +187,8 @@ function drawShapes(world: World, draw: DebugDraw, flags: DebugDrawFlags, option
   const shapes = core.shapes;
   const xf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
   const style = { fill: 0, fillAlpha: 1, stroke: 0 } as ShapeStyle;
+  const pA: Vec2 = { x: 0, y: 0 };
+  const pB: Vec2 = { x: 0, y: 0 };
   for (let b = 0; b < bodies.slotCount; b++) {
     if (bodies.alive[b] === 0) continue;
     const body = world.handles.bodies[b]!;
@@ -249,6 +253,10 @@ function drawContacts(world: World, draw: DebugDraw, flags: DebugDrawFlags, opti
   const core = world.core;
   const contacts = core.contacts;
   const normalLength = 0.3;
+  const drawnXf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
+  const pA: Vec2 = { x: 0, y: 0 };
+  const pB: Vec2 = { x: 0, y: 0 };
+  const pC: Vec2 = { x: 0, y: 0 };
   for (let c = 0; c < contacts.slotCount; c++) {
     if (contacts.alive[c] === 0) continue;
     const f = contacts.flags[c];
@@ -259,7 +267,7 @@ function drawContacts(world: World, draw: DebugDraw, flags: DebugDrawFlags, opti
       const k = c * 2 + i;
       pA.x = contacts.pointX[k];
       pA.y = contacts.pointY[k];
-      mapPoint(world, bodyA, options, pA, pC);
+      mapPoint(world, bodyA, options, pA, pC, drawnXf);
       if (flags.contacts) {
         draw.drawPoint(pC, 5, contacts.separation[k] > 0 ? colors.speculativePoint : colors.contactPoint);
       }
@@ -282,6 +290,7 @@ function drawVelocitiesAndCenters(
   const bodies = core.bodies;
   const xf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
   const center: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
+  const tip: Vec2 = { x: 0, y: 0 };
   for (let b = 0; b < bodies.slotCount; b++) {
     if (bodies.alive[b] === 0 || bodies.kind[b] === BodyKind.STATIC) continue;
     const body = world.handles.bodies[b]!;
@@ -295,19 +304,20 @@ function drawVelocitiesAndCenters(
       const vx = bodies.state[st + S.VX];
       const vy = bodies.state[st + S.VY];
       // a tenth of a second of travel
-      pB.x = center.p.x + vx * 0.1;
-      pB.y = center.p.y + vy * 0.1;
-      draw.drawLine(center.p, pB, colors.velocity);
+      tip.x = center.p.x + vx * 0.1;
+      tip.y = center.p.y + vy * 0.1;
+      draw.drawLine(center.p, tip, colors.velocity);
     }
   }
 }
 
 function drawJoints(world: World, draw: DebugDraw, options?: DrawWorldOptions) {
+  const drawnXf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
   for (const joint of world.joints) {
     const bodyA = joint.bodyA;
     const bodyB = joint.bodyB;
-    const a = mapPoint(world, bodyA, options, joint.anchorA, { x: 0, y: 0 });
-    const b = mapPoint(world, bodyB, options, joint.anchorB, { x: 0, y: 0 });
+    const a = mapPoint(world, bodyA, options, joint.anchorA, { x: 0, y: 0 }, drawnXf);
+    const b = mapPoint(world, bodyB, options, joint.anchorB, { x: 0, y: 0 }, drawnXf);
     if (joint.type === 'mouse') {
       // by type, not instanceof: the render entry may be a separate bundle (CommonJS)
       const target = (joint as MouseJoint).target;

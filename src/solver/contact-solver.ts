@@ -675,26 +675,34 @@ function orientContacts(cc: ContactConstraints, ux: number, uy: number): void {
   }
 }
 
+/** The depth of body `b` as the lower body of a support: 0 for a body that does not move. */
+function supportDepth(paths: LoadPaths, invMass: Float64Array, b: number): number {
+  return invMass[b] > 0 ? paths.depth[b] : 0;
+}
+
+/** The supportDepth of the lower body of constraint i, which has one. */
+function lowerDepth(cc: ContactConstraints, paths: LoadPaths, invMass: Float64Array, i: number): number {
+  return supportDepth(paths, invMass, cc.ids[i * 3 + cc.lower[i]] & IndexBound.MAX);
+}
+
 /**
  * The load level of constraint i: 0 when it carries no body four times heavier than its own, else
- * the L of stiffenLoadedContacts. Writes the lower body's depth to `support[0]`.
+ * the L of stiffenLoadedContacts.
  */
 function loadLevel(cc: ContactConstraints, paths: LoadPaths, invMass: Float64Array, i: number): number {
   const side = cc.lower[i];
   if (side < 0) return 0;
   const l = cc.ids[i * 3 + side] & IndexBound.MAX;
   const u = cc.ids[i * 3 + 1 - side] & IndexBound.MAX;
-  const lowerDepth = invMass[l] > 0 ? paths.depth[l] : 0;
   const upperDepth = paths.depth[u];
-  if (invMass[u] === 0 || upperDepth === UNSUPPORTED || upperDepth <= lowerDepth) return 0;
+  if (invMass[u] === 0 || upperDepth === UNSUPPORTED || upperDepth <= supportDepth(paths, invMass, l))
+    return 0;
   // the carried mass over the effective mass 1 / (1 / mA + 1 / mB)
   const ratio = paths.carried[u] * (invMass[l] + invMass[u]);
   let level = 0;
   for (let scale = 4; scale <= ratio && level < LOAD_LEVELS - 1; scale *= 4) level++;
-  support[0] = lowerDepth;
   return level;
 }
-const support = new Int32Array(1);
 
 /** Counts the loaded constraints per depth of their lower body. */
 function countSupports(
@@ -704,7 +712,7 @@ function countSupports(
   perDepth: Int32Array,
 ): void {
   for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
-    if (loadLevel(cc, paths, invMass, i) > 0) perDepth[support[0]]++;
+    if (loadLevel(cc, paths, invMass, i) > 0) perDepth[lowerDepth(cc, paths, invMass, i)]++;
   }
 }
 
@@ -724,7 +732,7 @@ function listSupports(
     const excess = level - cc.levelCaps[base === 0 ? 0 : 1];
     if (excess > cc.levelExcess) cc.levelExcess = excess;
     d[i * C.STRIDE + C.SOFTNESS] = base + 4 * level;
-    supports[next[support[0]]++] = i * 2 + cc.lower[i];
+    supports[next[lowerDepth(cc, paths, invMass, i)]++] = i * 2 + cc.lower[i];
   }
 }
 

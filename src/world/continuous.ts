@@ -1,54 +1,18 @@
-import { NO_MOTION } from '../broad-phase/broad-phase';
-import { IntList } from '../broad-phase/int-list';
 import { packedBounds } from '../geometry/bounds';
 import { minExtent } from '../geometry/extent';
 import { Pack } from '../geometry/packed';
 import { rayCastGeometry } from '../geometry/raycast';
-import { makeProxy, makeShapeProxy, type ShapeProxy } from '../geometry/shape-proxy';
-import { getSweepTransform, makeSweep } from '../geometry/sweep';
-import { makeTOIOutput, type TOIInput, timeOfImpact } from '../geometry/toi';
-import { type Geometry, type RayHit, ShapeKind } from '../geometry/types';
-import { makeBounds } from '../math/aabb';
-import { makeTransform } from '../math/vec2';
+import { makeProxy, type ShapeProxy } from '../geometry/shape-proxy';
+import { getSweepTransform } from '../geometry/sweep';
+import { timeOfImpact } from '../geometry/toi';
+import { type Geometry, ShapeKind } from '../geometry/types';
 import { BodyFlag } from '../store/body-store';
 import { ShapeFlag, shouldShapesCollide } from '../store/shape-store';
 import type { WorldCore } from './world-core';
 
-const input: TOIInput = {
-  proxyA: makeShapeProxy(),
-  sweepA: makeSweep(),
-  proxyB: makeShapeProxy(),
-  sweepB: makeSweep(),
-  maxFraction: 1,
-};
-const output = makeTOIOutput();
-const shapeProxy = input.proxyB;
-/** a small disc at the fast shape's centroid, swept when the whole shape starts out touching */
-const discProxy = makeShapeProxy();
-const candidates = new IntList(64);
-const start = makeTransform();
-const bounds = makeBounds();
-const xf = makeTransform();
-/** the other body's transform and the ray's hit, for discCentreRunsIn */
-const otherXf = makeTransform();
-const centreHit: RayHit = { fraction: 0, pointX: 0, pointY: 0, normalX: 0, normalY: 0 };
 const STATIC_TREE_MASK = 1;
 /** static, kinematic and dynamic trees */
 const ALL_TREES_MASK = 7;
-
-/**
- * The start of the step of the body handed to solveContinuous or deferBullet: centre x, y and
- * rotation cos, sin. Written by the caller (doubles passed to a call that V8 does not inline are put
- * on the heap).
- */
-export const sweepStart = new Float64Array(4);
-
-/** Fast bullets of the current step waiting for solveBullets: slot, and start centre and rotation. */
-let bulletCount = 0;
-let bulletSlots = new Int32Array(16);
-let bulletStarts = new Float64Array(16 * 4);
-/** the swept box of a shape, as minX, minY, maxX, maxY */
-const sweptBox = new Float64Array(4);
 
 /**
  * Continuous collision of one fast body against static shapes: the body's motion over the step
@@ -58,7 +22,7 @@ const sweptBox = new Float64Array(4);
  * @internal
  */
 export function solveContinuous(core: WorldCore, b: number): void {
-  sweepAgainst(core, b, sweepStart, 0, STATIC_TREE_MASK);
+  sweepAgainst(core, b, core.work.continuous.sweepStart, 0, STATIC_TREE_MASK);
 }
 
 /**
@@ -66,18 +30,20 @@ export function solveContinuous(core: WorldCore, b: number): void {
  * other awake body has its final transform; `solveBullets` handles it and moves its proxies.
  * Allocation free once warmed up.
  */
-export function deferBullet(b: number): void {
-  if (bulletCount === bulletSlots.length) {
-    const slots = new Int32Array(2 * bulletCount);
-    slots.set(bulletSlots);
-    bulletSlots = slots;
-    const starts = new Float64Array(8 * bulletCount);
-    starts.set(bulletStarts);
-    bulletStarts = starts;
+export function deferBullet(core: WorldCore, b: number): void {
+  const m = core.work.continuous;
+  const count = m.bulletCount;
+  if (count === m.bulletSlots.length) {
+    const slots = new Int32Array(2 * count);
+    slots.set(m.bulletSlots);
+    m.bulletSlots = slots;
+    const starts = new Float64Array(8 * count);
+    starts.set(m.bulletStarts);
+    m.bulletStarts = starts;
   }
-  const i = bulletCount++;
-  bulletSlots[i] = b;
-  bulletStarts.set(sweepStart, 4 * i);
+  m.bulletCount = count + 1;
+  m.bulletSlots[count] = b;
+  m.bulletStarts.set(m.sweepStart, 4 * count);
 }
 
 /**
@@ -91,15 +57,16 @@ export function solveBullets(core: WorldCore): void {
   const bodies = core.bodies;
   const shapes = core.shapes;
   const broad = core.broadPhase;
-  for (let i = 0; i < bulletCount; i++) {
-    const b = bulletSlots[i];
+  const m = core.work.continuous;
+  for (let i = 0; i < m.bulletCount; i++) {
+    const b = m.bulletSlots[i];
     const k = 4 * i;
-    sweepAgainst(core, b, bulletStarts, k, ALL_TREES_MASK);
+    sweepAgainst(core, b, m.bulletStarts, k, ALL_TREES_MASK);
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-      broad.moveProxy(shapes.proxyKey[s], shapes, s, NO_MOTION);
+      broad.placeProxy(shapes.proxyKey[s], shapes, s);
     }
   }
-  bulletCount = 0;
+  m.bulletCount = 0;
 }
 
 /** Sweeps body `b` from the start pose at `at` in `starts` (see sweepStart) against the trees of `treeMask`. */
@@ -108,6 +75,15 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
   if (core.broadPhase.isEmpty(treeMask)) return;
   const bodies = core.bodies;
   const shapes = core.shapes;
+  const m = core.work.continuous;
+  const input = m.input;
+  const output = m.output;
+  const shapeProxy = m.shapeProxy;
+  const discProxy = m.discProxy;
+  const candidates = m.candidates;
+  const start = m.start;
+  const bounds = m.bounds;
+  const sweptBox = m.sweptBox;
   const sweep = input.sweepB;
   sweep.localCenterX = bodies.lcx[b];
   sweep.localCenterY = bodies.lcy[b];
@@ -151,7 +127,7 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
       sa.q1C = sa.q2C = bodies.qc[ob];
       sa.q1S = sa.q2S = bodies.qs[ob];
       input.maxFraction = minFraction;
-      timeOfImpact(input, output, slop);
+      timeOfImpact(m.toi, input, output, slop);
       if (output.state === 'overlapped' || (output.state === 'hit' && output.fraction === 0)) {
         // Touching at the start: that contact is the solver's business, but the shape may still be
         // turning or sliding through the other one (a spinning plank against a wall it already
@@ -162,7 +138,7 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
           discReady = true;
         }
         input.proxyB = discProxy;
-        timeOfImpact(input, output, slop);
+        timeOfImpact(m.toi, input, output, slop);
         input.proxyB = shapeProxy;
         if (output.state === 'hit' && output.fraction === 0 && discCentreRunsIn(core, other, ob)) {
           // the core touches already, and the step would take its centre in or through: nothing
@@ -183,6 +159,7 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
     }
   }
   if (minFraction < 1) {
+    const xf = m.xf;
     getSweepTransform(sweep, minFraction, xf);
     bodies.qc[b] = xf.q.c;
     bodies.qs[b] = xf.q.s;
@@ -195,7 +172,7 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
 }
 
 /**
- * Whether the centre of the disc of the body being swept (input.sweepB, see loadDisc), which
+ * Whether the centre of the disc of the body being swept (its sweep is input.sweepB; see loadDisc), which
  * touches shape `other` of body `ob` at the start of the step, runs into that shape on its way to
  * the end of the step (its straight path hits it): it goes in or through. Sliding or rolling along
  * the shape, past a seam between two of them, does not (a test on the normal to the nearest feature
@@ -203,18 +180,23 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
  */
 function discCentreRunsIn(core: WorldCore, other: number, ob: number): boolean {
   const bodies = core.bodies;
+  const m = core.work.continuous;
+  const otherXf = m.otherXf;
+  const xf = m.xf;
+  const start = m.start;
+  const discProxy = m.discProxy;
   otherXf.p.x = bodies.px[ob];
   otherXf.p.y = bodies.py[ob];
   otherXf.q.c = bodies.qc[ob];
   otherXf.q.s = bodies.qs[ob];
-  getSweepTransform(input.sweepB, 1, xf);
+  getSweepTransform(m.input.sweepB, 1, xf);
   const lx = discProxy.x[0];
   const ly = discProxy.y[0];
   const x0 = start.p.x + start.q.c * lx - start.q.s * ly;
   const y0 = start.p.y + start.q.s * lx + start.q.c * ly;
   const x1 = xf.p.x + xf.q.c * lx - xf.q.s * ly;
   const y1 = xf.p.y + xf.q.s * lx + xf.q.c * ly;
-  return rayCastGeometry(core.shapes.geometry[other]!, otherXf, x0, y0, x1 - x0, y1 - y0, centreHit);
+  return rayCastGeometry(core.shapes.geometry[other]!, otherXf, x0, y0, x1 - x0, y1 - y0, m.centreHit);
 }
 
 /** A one-point proxy at the shape's centroid with a quarter of its smallest half-thickness as radius. */

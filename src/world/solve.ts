@@ -29,18 +29,13 @@ import {
 } from '../solver/contact-solver';
 import { MAX_FINE_FACTOR } from '../solver/fine-islands';
 import type { GraphColoring } from '../solver/graph-color';
-import { makeSoftness, type Softness } from '../solver/softness';
+import { makeSoftness } from '../solver/softness';
 import type { SolverJoint } from '../solver/solver-joint';
 import { BodyFlag, BodyKind, type BodyStore, S } from '../store/body-store';
 import { ContactFlag, type ContactStore } from '../store/contact-store';
 import { ShapeFlag } from '../store/shape-store';
-import { deferBullet, solveBullets, solveContinuous, sweepStart } from './continuous';
-import type { WorldCore } from './world-core';
-
-const contactSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
-/** a body's displacement over the step, handed to BroadPhase.moveProxy for each of its shapes */
-const proxyMotion = new Float64Array(2);
-const staticSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+import { deferBullet, solveBullets, solveContinuous } from './continuous';
+import type { WorkingMemory, WorldCore } from './world-core';
 
 /** @internal Lists the awake non-static bodies by ascending slot. */
 export function collectAwakeBodies(core: WorldCore): void {
@@ -146,7 +141,7 @@ function addTouchingContacts(contacts: ContactStore, bodies: BodyStore, coloring
 }
 
 /** Sets the softness of the contacts of `cc` for substep `h`, unless it is set for `h` already. */
-function setSoftnessFor(cc: ContactConstraints, h: number): void {
+function setSoftnessFor(work: WorkingMemory, cc: ContactConstraints, h: number): void {
   if (cc.softnessStep === h) return;
   cc.softnessStep = h;
   // a contact spring faster than an eighth of the substep rate makes large piles ring at few
@@ -154,8 +149,8 @@ function setSoftnessFor(cc: ContactConstraints, h: number): void {
   const contactHertz = Math.min(CONTACT_HERTZ, 0.125 / h);
   setContactSoftness(
     cc,
-    makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, contactSoftness),
-    makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, staticSoftness),
+    makeSoftness(contactHertz, CONTACT_DAMPING_RATIO, h, work.contactSoftness),
+    makeSoftness(2 * contactHertz, CONTACT_DAMPING_RATIO, h, work.anchoredSoftness),
     contactHertz,
     h,
   );
@@ -166,7 +161,7 @@ function prepareContacts(core: WorldCore, h: number): void {
   const contacts = core.contacts;
   const bodies = core.bodies;
   const cc = core.constraints;
-  setSoftnessFor(cc, h);
+  setSoftnessFor(core.work, cc, h);
   const coloring = core.coloring;
   coloring.begin(bodies.capacity, contacts.liveCount);
   addTouchingContacts(contacts, bodies, coloring);
@@ -204,7 +199,7 @@ function solveFineIslands(core: WorldCore, dt: number, subSteps: number, factor:
   const bodies = core.bodies;
   const state = bodies.state;
   const settings = core.settings;
-  setSoftnessFor(cc, h);
+  setSoftnessFor(core.work, cc, h);
   prepareVelocityUpdate(bodies, fine.bodies, fine.count, h, core.gravityX, core.gravityY, fine.update);
   for (let i = 0; i < subSteps; i++) {
     integrateVelocities(bodies, fine.bodies, fine.count, fine.update, h, settings.maxLinearSpeed);
@@ -358,6 +353,8 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
   const enableSleep = core.enableSleep;
   const continuous = core.enableContinuous;
   const invDt = 1 / dt;
+  const sweepStart = core.work.continuous.sweepStart;
+  const proxyMotion = core.work.proxyMotion;
   // the relax pass after the last position update is not bounded by the substeps' clamps
   clampAwakeVelocities(
     bodies,
@@ -452,7 +449,7 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
       sweepStart[3] = q0s;
       if ((colFlags[b] & BodyFlag.BULLET) !== 0) {
         // bullets also sweep against moving bodies, once those are final: see solveBullets
-        deferBullet(b);
+        deferBullet(core, b);
         continue;
       }
       solveContinuous(core, b);

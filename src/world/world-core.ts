@@ -1,4 +1,4 @@
-import { BroadPhase, NO_MOTION, type PairFilter, ProxyType } from '../broad-phase/broad-phase';
+import { BroadPhase, type PairFilter, ProxyType } from '../broad-phase/broad-phase';
 import { IntList } from '../broad-phase/int-list';
 import { PairSet } from '../broad-phase/pair-set';
 import {
@@ -24,12 +24,14 @@ import { HingeBatch } from '../solver/hinge-batch';
 import { Islands } from '../solver/island';
 import type { JointContext } from '../solver/joint-context';
 import { JointTree } from '../solver/joint-tree';
+import type { Softness } from '../solver/softness';
 import type { SolverJoint } from '../solver/solver-joint';
 import { BodyFlag, BodyKind, BodyStore } from '../store/body-store';
 import { ContactFlag, ContactStore } from '../store/contact-store';
 import { EventBuffers } from '../store/event-buffers';
 import { ShapeFlag, ShapeStore, shouldShapesCollide } from '../store/shape-store';
 import { ContactLimiter } from './contact-limit';
+import { ContinuousMemory } from './continuous-memory';
 
 /**
  * Scratch transforms of the step, built from classes of their own: V8 keeps the fields of a class
@@ -59,8 +61,8 @@ class ScratchManifoldPoint implements ManifoldPoint {
 }
 
 /**
- * A world's working memory for the narrow phase and the mass and bounds updates: written before it is
- * read in every use, so it is not state (the snapshot skips it) and no module holds any.
+ * A world's working memory for the step's stages and the mass and bounds updates: written before it
+ * is read in every use, so it is not state (the snapshot skips it) and no module holds any.
  * @internal
  */
 export class WorkingMemory {
@@ -75,6 +77,13 @@ export class WorkingMemory {
   readonly collide = new CollideContext();
   readonly bounds: Bounds = makeBounds();
   readonly mass: MassData = { mass: 0, centerX: 0, centerY: 0, inertia: 0 };
+  /** The sweeps of continuous collision and the bullets of the current step. */
+  readonly continuous = new ContinuousMemory();
+  /** The substep's contact softness and the anchored one (see setSoftnessFor in solve.ts). */
+  readonly contactSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+  readonly anchoredSoftness: Softness = { biasRate: 0, massScale: 1, impulseScale: 0 };
+  /** A body's displacement over the step, handed to BroadPhase.moveProxy for each of its shapes. */
+  readonly proxyMotion = new Float64Array(2);
 }
 
 /**
@@ -226,7 +235,7 @@ export class WorldCore implements PairFilter {
     for (let s = this.bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
       this.refreshShapeBounds(s);
       const key = shapes.proxyKey[s];
-      if (!this.broadPhase.moveProxy(key, shapes, s, NO_MOTION)) {
+      if (!this.broadPhase.placeProxy(key, shapes, s)) {
         this.broadPhase.bufferMove(key);
       }
     }

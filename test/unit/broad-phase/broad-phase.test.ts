@@ -2,7 +2,6 @@ import { describe, expect, it } from 'vitest';
 import {
   BroadPhase,
   type BroadPhaseRayCastVisitor,
-  NO_MOTION,
   type PairFilter,
   type ProxyType,
   proxyKeyId,
@@ -204,8 +203,8 @@ describe('BroadPhase', () => {
     expect(bp.getFatBounds(s, makeBounds())).toEqual({ minX: 0, minY: 0, maxX: 1, maxY: 1 });
     expect(bp.getFatBounds(d, makeBounds())).toEqual({ minX: -0.5, minY: -0.5, maxX: 1.5, maxY: 1.5 });
     expect(bp.moveCount).toBe(2);
-    expect(bp.moveProxy(d, box(0.3, 0.3, 1.3, 1.3), 0, NO_MOTION)).toBe(false);
-    expect(bp.moveProxy(d, box(0.6, 0, 1.6, 1), 0, NO_MOTION)).toBe(true);
+    expect(bp.placeProxy(d, box(0.3, 0.3, 1.3, 1.3), 0)).toBe(false);
+    expect(bp.placeProxy(d, box(0.6, 0, 1.6, 1), 0)).toBe(true);
     expect(bp.moveCount).toBe(2);
     const out = new IntList();
     bp.updatePairs(new PairSet(), allPairs, out);
@@ -240,11 +239,11 @@ describe('BroadPhase', () => {
     expect(moves).toEqual([true, false, false, true, false, false, true]);
     // at rest where it is: the box stretched ahead is more than the margin larger than needed, and
     // shrinks to the tight box grown by the margin
-    expect(bp.moveProxy(key, box(1.05, 0, 2.05, 1), 0, NO_MOTION)).toBe(true);
+    expect(bp.placeProxy(key, box(1.05, 0, 2.05, 1), 0)).toBe(true);
     const b = bp.getFatBounds(key, bounds);
     expect(b.minX).toBeCloseTo(0.95, 12);
     expect(b.maxX).toBeCloseTo(2.15, 12);
-    expect(bp.moveProxy(key, box(1.05, 0, 2.05, 1), 0, NO_MOTION)).toBe(false);
+    expect(bp.placeProxy(key, box(1.05, 0, 2.05, 1), 0)).toBe(false);
   });
 
   it('forgets a buffered proxy that is destroyed', () => {

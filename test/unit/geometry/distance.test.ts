@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { type DistanceOutput, makeDistanceOutput, shapeDistance } from '../../../src/geometry/distance';
 import { makeProxy, makeShapeProxy } from '../../../src/geometry/shape-proxy';
+import { GjkMemory } from '../../../src/geometry/simplex';
 import type { Geometry } from '../../../src/geometry/types';
 import type { Transform } from '../../../src/math/vec2';
 import {
@@ -18,13 +19,15 @@ import {
   xf,
 } from './distance-fixtures';
 
+/** one working memory for every call: each call must write before it reads */
+const gjk = new GjkMemory();
 const proxyA = makeShapeProxy();
 const proxyB = makeShapeProxy();
 
 function dist(ga: Geometry, ta: Transform, gb: Geometry, tb: Transform, useRadii = true): DistanceOutput {
   makeProxy(ga, proxyA);
   makeProxy(gb, proxyB);
-  return shapeDistance(proxyA, ta, proxyB, tb, useRadii, makeDistanceOutput());
+  return shapeDistance(gjk, proxyA, ta, proxyB, tb, useRadii, makeDistanceOutput());
 }
 
 /** The output is self-consistent: |pB - pA| = distance and, when apart, pB - pA = distance * normal. */

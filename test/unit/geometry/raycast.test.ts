@@ -178,6 +178,36 @@ describe('rayCastGeometry', () => {
     expectHit(cast(box, identity, 1, 0, -1, 0), 0, 1, 0, 1, 0, -1, 0);
     expect(cast(box, identity, 1, 0, 1, 0)).toBeNull();
   });
+
+  it('leaves the hit as it was on a miss, and writes all of it on a hit', () => {
+    const t = xf(0.5, -0.25, 0.7);
+    const shapes = [
+      Shape.circle(1),
+      Shape.box(1, 1),
+      Shape.capsule({ x: -1, y: 0 }, { x: 1, y: 0 }, 0.5),
+      Shape.polygon(Shape.box(1, 1).vertices, 0.25),
+      Shape.segment({ x: -1, y: 0 }, { x: 1, y: 0 }),
+    ];
+    const marked = { fraction: 7, pointX: 8, pointY: 9, normalX: 10, normalY: 11 };
+    for (const g of shapes) {
+      // rays that pass the shape, stop short of it, and (but for the segment, which a ray starting on
+      // it hits) start inside it
+      const rays = [
+        [-5, 4, 10, 0],
+        [-5, 0, 1, 0],
+      ];
+      if (g.type !== 'segment') rays.push([0.5, -0.25, 0.01, 0.01]);
+      for (const [ox, oy, dx, dy] of rays) {
+        const hit = { ...marked };
+        expect(rayCastGeometry(g, t, ox, oy, dx, dy, hit)).toBe(false);
+        expect(hit).toEqual(marked);
+      }
+      // one hit, into a marked record and a fresh one: the same numbers
+      const hit = { ...marked };
+      expect(rayCastGeometry(g, t, -5, -0.25, 10, 0.2, hit)).toBe(true);
+      expect(hit).toEqual(cast(g, t, -5, -0.25, 10, 0.2));
+    }
+  });
 });
 
 describe('testPoint', () => {

@@ -6,6 +6,7 @@ import {
   shapeCast,
 } from '../../../src/geometry/shape-cast';
 import { makeProxy } from '../../../src/geometry/shape-proxy';
+import { GjkMemory } from '../../../src/geometry/simplex';
 import type { Geometry } from '../../../src/geometry/types';
 import type { Transform } from '../../../src/math/vec2';
 import {
@@ -21,6 +22,8 @@ import {
 } from './distance-fixtures';
 
 const input = makeShapeCastInput();
+/** one working memory for every cast: each must write before it reads */
+const gjk = new GjkMemory();
 
 function cast(
   ga: Geometry,
@@ -38,7 +41,7 @@ function cast(
   input.translationX = tx;
   input.translationY = ty;
   input.maxFraction = maxFraction;
-  return shapeCast(input, makeShapeCastOutput());
+  return shapeCast(gjk, input, makeShapeCastOutput());
 }
 
 function expectHit(o: ShapeCastOutput, fraction: number, px: number, py: number, nx: number, ny: number) {

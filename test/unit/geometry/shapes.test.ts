@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { FulcrumError } from '../../../src/core/errors';
 import { computeShapeBounds } from '../../../src/geometry/bounds';
 import { convexHull } from '../../../src/geometry/hull';
+import { Pack } from '../../../src/geometry/packed';
 import { Shape } from '../../../src/geometry/shapes';
 import { type Polygon, ShapeKind } from '../../../src/geometry/types';
 import { makeBounds } from '../../../src/math/aabb';
@@ -323,18 +324,19 @@ describe('Shape factories', () => {
 describe('computeShapeBounds', () => {
   it('is the tight world box including the radius', () => {
     const out = makeBounds();
+    const packed = new Float64Array(Pack.STRIDE);
     const t = xf(1, 2, Math.PI / 4);
-    computeShapeBounds(Shape.box(1, 1), t, out);
+    computeShapeBounds(Shape.box(1, 1), t, out, packed);
     expect(out.minX).toBeCloseTo(1 - Math.SQRT2, 14);
     expect(out.maxY).toBeCloseTo(2 + Math.SQRT2, 14);
-    computeShapeBounds(Shape.polygon(Shape.box(1, 1).vertices, 0.5), xf(0, 0, 0), out);
+    computeShapeBounds(Shape.polygon(Shape.box(1, 1).vertices, 0.5), xf(0, 0, 0), out, packed);
     expect(out).toEqual({ minX: -1.5, minY: -1.5, maxX: 1.5, maxY: 1.5 });
-    computeShapeBounds(Shape.circle(0.5, { x: 1, y: 0 }), xf(0, 0, Math.PI / 2), out);
+    computeShapeBounds(Shape.circle(0.5, { x: 1, y: 0 }), xf(0, 0, Math.PI / 2), out, packed);
     expect(out.minX).toBeCloseTo(-0.5, 14);
     expect(out.minY).toBeCloseTo(0.5, 14);
-    computeShapeBounds(Shape.capsule({ x: -1, y: 0 }, { x: 1, y: 0 }, 0.25), xf(0, 0, 0), out);
+    computeShapeBounds(Shape.capsule({ x: -1, y: 0 }, { x: 1, y: 0 }, 0.25), xf(0, 0, 0), out, packed);
     expect(out).toEqual({ minX: -1.25, minY: -0.25, maxX: 1.25, maxY: 0.25 });
-    computeShapeBounds(Shape.segment({ x: -1, y: 0 }, { x: 1, y: 3 }), xf(1, 1, 0), out);
+    computeShapeBounds(Shape.segment({ x: -1, y: 0 }, { x: 1, y: 3 }), xf(1, 1, 0), out, packed);
     expect(out).toEqual({ minX: 0, minY: 1, maxX: 2, maxY: 4 });
   });
 });

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { makeProxy, makeShapeProxy } from '../../../src/geometry/shape-proxy';
 import { getSweepTransform, makeSweep, type Sweep } from '../../../src/geometry/sweep';
-import { makeTOIOutput, type TOIOutput, timeOfImpact } from '../../../src/geometry/toi';
+import { makeTOIOutput, TOIMemory, type TOIOutput, timeOfImpact } from '../../../src/geometry/toi';
 import type { Geometry } from '../../../src/geometry/types';
 import { makeRot } from '../../../src/math/rot';
 import { makeTransform } from '../../../src/math/vec2';
@@ -10,6 +10,8 @@ import { box, bruteCoreDistance, capsule, circle, radiusOf, rng, worldCore } fro
 const SLOP = 0.005;
 const proxyA = makeShapeProxy();
 const proxyB = makeShapeProxy();
+/** one working memory for every call: each must write before it reads */
+const memory = new TOIMemory();
 
 /** Sweep of a body whose centre of mass (localCenter in the body frame) goes c1 -> c2, angle a1 -> a2. */
 function sweep(
@@ -33,7 +35,7 @@ function sweep(
 function toi(ga: Geometry, sa: Sweep, gb: Geometry, sb: Sweep, maxFraction = 1): TOIOutput {
   makeProxy(ga, proxyA);
   makeProxy(gb, proxyB);
-  return timeOfImpact({ proxyA, sweepA: sa, proxyB, sweepB: sb, maxFraction }, makeTOIOutput());
+  return timeOfImpact(memory, { proxyA, sweepA: sa, proxyB, sweepB: sb, maxFraction }, makeTOIOutput());
 }
 
 /** Brute-force surface distance (negative inside) of the two swept shapes at fraction t. */
