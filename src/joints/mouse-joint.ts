@@ -3,7 +3,6 @@ import type { World } from '../api/world';
 import { checkCoordinates } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import type { JointContext } from '../solver/joint-context';
-import { solve22, solved } from '../solver/joint-math';
 import { makeSoftness, type Softness } from '../solver/softness';
 import { S } from '../store/body-store';
 import { Joint } from './joint';
@@ -91,6 +90,7 @@ export class MouseJoint extends Joint {
 
   /** @internal */
   solve(ctx: JointContext, _useBias: boolean): void {
+    const rows = this.core.work.pointRows;
     const state = ctx.state;
     this.updateAnchors(state);
     const sb = this.b * S.STRIDE;
@@ -109,11 +109,13 @@ export class MouseJoint extends Joint {
     const k11 = mB + rBy * rBy * iB;
     const k12 = -rBy * rBx * iB;
     const k22 = mB + rBx * rBx * iB;
-    solve22(k11, k12, k22, cdotX + this.soft.biasRate * cx, cdotY + this.soft.biasRate * cy);
+    const det = rows.inverseDeterminant(k11, k12, k22);
+    const bx = cdotX + this.soft.biasRate * cx;
+    const by = cdotY + this.soft.biasRate * cy;
     const oldX = this.impulseX;
     const oldY = this.impulseY;
-    let ix = oldX - this.soft.massScale * solved.x - this.soft.impulseScale * oldX;
-    let iy = oldY - this.soft.massScale * solved.y - this.soft.impulseScale * oldY;
+    let ix = oldX - this.soft.massScale * rows.solveX(det, k12, k22, bx, by) - this.soft.impulseScale * oldX;
+    let iy = oldY - this.soft.massScale * rows.solveY(det, k11, k12, bx, by) - this.soft.impulseScale * oldY;
     const max = this.o.maxForce * ctx.h;
     const len2 = ix * ix + iy * iy;
     if (len2 > max * max) {
