@@ -7,8 +7,7 @@ import type { JointContext } from '../solver/joint-context';
 import { relativeAngle } from '../solver/joint-math';
 import { S } from '../store/body-store';
 import type { WorldCore } from '../world/world-core';
-
-export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'mouse' | 'motor';
+import type { JointType } from './registry';
 
 /**
  * Base of every joint: two bodies, an anchor on each (in the body's frame, relative to its origin),

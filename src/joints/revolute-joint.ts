@@ -17,9 +17,36 @@ import { CLOSURE_REGULARIZATION } from '../solver/joint-tree';
 import { makeSoftness, type Softness, springImpulse } from '../solver/softness';
 import { S } from '../store/body-store';
 import { Joint } from './joint';
+import {
+  ANCHOR_KEYS,
+  type AnchorDef,
+  anchorsOf,
+  BASE_KEYS,
+  type BaseDef,
+  checkOrder,
+  currentAngle,
+  type JointKind,
+  jointBodies,
+  optionalBoolean,
+  optionalNumber,
+  SPRING_KEYS,
+  type SpringDef,
+} from './joint-def';
 
 /** the Jacobian of B's turn relative to A (A's block, then B's) */
 const TURN_JACOBIAN: readonly number[] = Object.freeze([0, 0, -1, 0, 0, 1]);
+
+/** A revolute joint (see RevoluteJoint); `referenceAngle` defaults to the bodies' angle now. */
+export interface RevoluteJointDef extends BaseDef, AnchorDef, SpringDef {
+  type: 'revolute';
+  referenceAngle?: number;
+  enableLimit?: boolean;
+  lowerAngle?: number;
+  upperAngle?: number;
+  enableMotor?: boolean;
+  motorSpeed?: number;
+  maxMotorTorque?: number;
+}
 
 /** @internal */
 export interface RevoluteOptions {
@@ -446,3 +473,40 @@ export class RevoluteJoint extends Joint {
     rows.applyImpulse(state, sa, sb, mA, iA, mB, iB, rAx, rAy, rBx, rBy, px, py);
   }
 }
+
+/** @internal The revolute joint's kind (see registry.ts): its keys, defaults and validation. */
+export const revoluteKind: JointKind<RevoluteJointDef, RevoluteJoint> = Object.freeze({
+  className: 'RevoluteJoint',
+  jointClass: RevoluteJoint,
+  keys: Object.freeze([
+    ...BASE_KEYS,
+    ...ANCHOR_KEYS,
+    ...SPRING_KEYS,
+    'referenceAngle',
+    'enableLimit',
+    'lowerAngle',
+    'upperAngle',
+    'enableMotor',
+    'motorSpeed',
+    'maxMotorTorque',
+  ]),
+  build(world: World, def: RevoluteJointDef): RevoluteJoint {
+    const { a, b, collide } = jointBodies(world, def);
+    const { la, lb } = anchorsOf(def, a, b);
+    const lowerAngle = optionalNumber(checkAngle, 'lowerAngle', def.lowerAngle, 0);
+    const upperAngle = optionalNumber(checkAngle, 'upperAngle', def.upperAngle, 0);
+    checkOrder('lowerAngle', lowerAngle, 'upperAngle', upperAngle);
+    return new RevoluteJoint(world, a, b, la, lb, collide, def.userData, {
+      referenceAngle: optionalNumber(checkAngle, 'referenceAngle', def.referenceAngle, currentAngle(a, b)),
+      enableLimit: optionalBoolean('enableLimit', def.enableLimit, false),
+      lowerAngle,
+      upperAngle,
+      enableMotor: optionalBoolean('enableMotor', def.enableMotor, false),
+      motorSpeed: optionalNumber(checkRate, 'motorSpeed', def.motorSpeed, 0),
+      maxMotorTorque: optionalNumber(checkNonNegativeForce, 'maxMotorTorque', def.maxMotorTorque, 0),
+      enableSpring: optionalBoolean('enableSpring', def.enableSpring, false),
+      hertz: optionalNumber(checkHertz, 'hertz', def.hertz, 0),
+      dampingRatio: optionalNumber(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 0),
+    });
+  },
+});
