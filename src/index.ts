@@ -22,24 +22,15 @@ export { FulcrumError } from './core/errors';
 export { Shape } from './geometry/shapes';
 export { parseSvgPath, type SvgPathOptions, type SvgSubpath } from './geometry/svg-path';
 export type { Capsule, Circle, Concave, Geometry, Polygon, Segment } from './geometry/types';
-export type {
-  DistanceJointDef,
-  JointDef,
-  MotorJointDef,
-  MouseJointDef,
-  PrismaticJointDef,
-  RevoluteJointDef,
-  WeldJointDef,
-  WheelJointDef,
-} from './joints/create-joint';
-export { DistanceJoint } from './joints/distance-joint';
-export { Joint, type JointType } from './joints/joint';
-export { MotorJoint } from './joints/motor-joint';
-export { MouseJoint } from './joints/mouse-joint';
-export { PrismaticJoint } from './joints/prismatic-joint';
-export { RevoluteJoint } from './joints/revolute-joint';
-export { WeldJoint } from './joints/weld-joint';
-export { WheelJoint } from './joints/wheel-joint';
+export { DistanceJoint, type DistanceJointDef } from './joints/distance-joint';
+export { Joint } from './joints/joint';
+export { MotorJoint, type MotorJointDef } from './joints/motor-joint';
+export { MouseJoint, type MouseJointDef } from './joints/mouse-joint';
+export { PrismaticJoint, type PrismaticJointDef } from './joints/prismatic-joint';
+export type { JointDef, JointType } from './joints/registry';
+export { RevoluteJoint, type RevoluteJointDef } from './joints/revolute-joint';
+export { WeldJoint, type WeldJointDef } from './joints/weld-joint';
+export { WheelJoint, type WheelJointDef } from './joints/wheel-joint';
 export type { AABB } from './math/aabb';
 export type { Rot, Transform, Vec2 } from './math/vec2';
 export type { CastHit, QueryFilter, QueryTransform } from './query/index';

@@ -74,8 +74,6 @@ function checkScaleFactor(argument: string, value: unknown, given: unknown): num
   return value;
 }
 
-const rotScratch = { c: 1, s: 0 };
-
 /**
  * A body handle: a slot and a generation into the world's columns. It stays valid until the body is
  * destroyed; after that every use throws FulcrumError.
@@ -226,9 +224,9 @@ export class Body {
   setAngle(angle: number): void {
     const b = this.unlocked();
     const a = checkAngle('angle', angle);
-    makeRotInto(a, rotScratch);
-    this.core.bodies.qc[b] = rotScratch.c;
-    this.core.bodies.qs[b] = rotScratch.s;
+    const rot = makeRotInto(a, { c: 1, s: 0 });
+    this.core.bodies.qc[b] = rot.c;
+    this.core.bodies.qs[b] = rot.s;
     this.moved(b);
   }
 
@@ -237,11 +235,11 @@ export class Body {
     const p = checkCoordinates('position', position);
     const a = checkAngle('angle', angle);
     const bodies = this.core.bodies;
-    makeRotInto(a, rotScratch);
+    const rot = makeRotInto(a, { c: 1, s: 0 });
     bodies.px[b] = p.x;
     bodies.py[b] = p.y;
-    bodies.qc[b] = rotScratch.c;
-    bodies.qs[b] = rotScratch.s;
+    bodies.qc[b] = rot.c;
+    bodies.qs[b] = rot.s;
     this.moved(b);
   }
 

@@ -1,8 +1,6 @@
 import { checkBoolean, checkKnownKeys, FulcrumError, fail } from '../core/errors';
 import { checkRoom } from '../core/index-bound';
 import { checkCoordinates, checkDensity, checkNonNegativeRate } from '../core/limits';
-import { maxExtentFrom } from '../geometry/extent';
-import { Pack, packGeometry } from '../geometry/packed';
 import { rayCastGeometry, testPoint } from '../geometry/raycast';
 import { type Concave, type Geometry, isConcave, isGeometry, makeRayHit, ShapeKind } from '../geometry/types';
 import type { AABB } from '../math/aabb';
@@ -115,10 +113,6 @@ export function resolveShapeDef(def: ShapeDef | undefined): ResolvedShapeDef {
     userData: d.userData,
   };
 }
-
-const hit = makeRayHit();
-/** the body's transform for testPoint and rayCast: not the world's scratch, which a snapshot holds */
-const xf = makeTransform();
 
 /** A shape handle: valid until the shape or its body is destroyed. */
 export class ShapeHandle {
@@ -290,7 +284,7 @@ export class ShapeHandle {
     const s = this.check();
     const p = checkCoordinates('point', point);
     const core = this.body.core;
-    return testPoint(this.current, core.fillTransform(core.shapes.body[s], xf), p.x, p.y);
+    return testPoint(this.current, core.fillTransform(core.shapes.body[s], makeTransform()), p.x, p.y);
   }
 
   /** Ray from `origin` along `translation`; null when it misses (see geometry/raycast.ts for the rules). */
@@ -299,7 +293,8 @@ export class ShapeHandle {
     const o = checkCoordinates('origin', origin);
     const t = checkCoordinates('translation', translation);
     const core = this.body.core;
-    core.fillTransform(core.shapes.body[s], xf);
+    const xf = core.fillTransform(core.shapes.body[s], makeTransform());
+    const hit = makeRayHit();
     if (!rayCastGeometry(this.current, xf, o.x, o.y, t.x, t.y, hit)) return null;
     return {
       point: { x: hit.pointX, y: hit.pointY },

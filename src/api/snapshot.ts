@@ -3,13 +3,7 @@ import { DynamicTree } from '../broad-phase/dynamic-tree';
 import { IntList } from '../broad-phase/int-list';
 import { PairSet } from '../broad-phase/pair-set';
 import { FulcrumError, fail } from '../core/errors';
-import { DistanceJoint } from '../joints/distance-joint';
-import { MotorJoint } from '../joints/motor-joint';
-import { MouseJoint } from '../joints/mouse-joint';
-import { PrismaticJoint } from '../joints/prismatic-joint';
-import { RevoluteJoint } from '../joints/revolute-joint';
-import { WeldJoint } from '../joints/weld-joint';
-import { WheelJoint } from '../joints/wheel-joint';
+import { JOINT_KINDS } from '../joints/registry';
 import { ContactConstraints } from '../solver/contact-solver';
 import { GraphColoring } from '../solver/graph-color';
 import { Islands } from '../solver/island';
@@ -80,25 +74,20 @@ import {
  * data: the fresh world's own are kept.
  */
 
-const SNAPSHOT_MAGIC = [0x46, 0x4c, 0x43, 0x53]; // "FLCS"
+const SNAPSHOT_MAGIC: readonly number[] = Object.freeze([0x46, 0x4c, 0x43, 0x53]); // "FLCS"
 const SNAPSHOT_VERSION = 1;
 const HEADER_SIZE = 20;
 
 /**
  * Classes an object of the snapshot may have to be created as (the fresh world may not hold one):
- * stable names, independent of minification. Never rename a key (it is in the bytes).
+ * stable names, independent of minification. Never rename a key (it is in the bytes). The joints'
+ * come from the registry (each kind's className).
  */
-const CLASSES: Record<string, abstract new (...args: never[]) => object> = {
+const CLASSES: Readonly<Record<string, abstract new (...args: never[]) => object>> = Object.freeze({
   WorldHandles,
   Body,
   ShapeHandle,
-  DistanceJoint,
-  MotorJoint,
-  MouseJoint,
-  PrismaticJoint,
-  RevoluteJoint,
-  WeldJoint,
-  WheelJoint,
+  ...Object.fromEntries(Object.values(JOINT_KINDS).map((kind) => [kind.className, kind.jointClass])),
   WorldCore,
   BodyStore,
   ShapeStore,
@@ -111,7 +100,7 @@ const CLASSES: Record<string, abstract new (...args: never[]) => object> = {
   DynamicTree,
   PairSet,
   IntList,
-};
+});
 
 const CLASS_KEYS = new Map<unknown, string>(Object.entries(CLASSES).map(([key, ctor]) => [ctor, key]));
 
@@ -124,7 +113,7 @@ function isExcluded(value: object): boolean {
 }
 
 /** Properties whose value is the user's: kept only when plain data. */
-const USER_KEYS = new Set(['userData']);
+const USER_KEYS: ReadonlySet<string> = new Set(['userData']);
 
 /** '' for a plain object, 'null' for a null-prototype one, the class key otherwise. */
 function classKey(value: object): string {

@@ -17,42 +17,23 @@ import {
   checkZeroOrRange,
   Limits,
 } from '../core/limits';
-import { maxExtentFrom } from '../geometry/extent';
-import { Pack, packGeometry } from '../geometry/packed';
-import { type Geometry, isGeometry, ShapeKind } from '../geometry/types';
-import {
-  buildJoint,
-  type DistanceJointDef,
-  type JointDef,
-  type MotorJointDef,
-  type MouseJointDef,
-  type PrismaticJointDef,
-  type RevoluteJointDef,
-  type WeldJointDef,
-  type WheelJointDef,
-} from '../joints/create-joint';
-import type { DistanceJoint } from '../joints/distance-joint';
+import type { Geometry } from '../geometry/types';
+import { buildJoint } from '../joints/create-joint';
 import { Joint } from '../joints/joint';
-import type { MotorJoint } from '../joints/motor-joint';
-import type { MouseJoint } from '../joints/mouse-joint';
-import type { PrismaticJoint } from '../joints/prismatic-joint';
-import type { RevoluteJoint } from '../joints/revolute-joint';
-import type { WeldJoint } from '../joints/weld-joint';
-import type { WheelJoint } from '../joints/wheel-joint';
+import type { JointType, JointTypes } from '../joints/registry';
 import type { AABB } from '../math/aabb';
 import { makeRotInto } from '../math/rot';
-import type { Vec2 } from '../math/vec2';
+import type { Rot, Vec2 } from '../math/vec2';
 import type { CastHit, QueryFilter, QueryTransform } from '../query/index';
 import * as queries from '../query/index';
 import { BodyFlag, BodyKind, S } from '../store/body-store';
-import { ContactFlag } from '../store/contact-store';
 import { stepWorld } from '../world/step';
 import { WorldCore } from '../world/world-core';
 import { sleepIsland } from '../world/world-edits';
-import { BODY_DEF_KEYS, BODY_KINDS, BODY_TYPES, Body, type BodyDef, type BodyType } from './body';
+import { BODY_DEF_KEYS, BODY_KINDS, BODY_TYPES, Body, type BodyDef } from './body';
 import type { WorldEventMap, WorldEvents } from './events';
 import { WorldHandles } from './handles';
-import { resolveShapeDef, type ShapeDef, type ShapeHandle } from './shape';
+import type { ShapeHandle } from './shape';
 import { readSnapshot, writeSnapshot } from './snapshot';
 
 export interface WorldDef {
@@ -70,7 +51,6 @@ const WORLD_DEF_KEYS = [
   'enableContinuous',
   'lengthUnitsPerMeter',
 ] as const;
-const rotScratch = { c: 1, s: 0 };
 
 /** A physics world: bodies, their shapes, contacts and the step that moves them. */
 export class World {
@@ -78,6 +58,8 @@ export class World {
   readonly core: WorldCore;
   /** @internal the handles of its bodies and shapes, and its events */
   readonly handles: WorldHandles;
+  /** a new body's rotation as createBody works it out (a # field: no property key, so no snapshot) */
+  readonly #rot: Rot = { c: 1, s: 0 };
 
   constructor(def: WorldDef = {}) {
     if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
@@ -236,11 +218,11 @@ export class World {
     if (bullet) flags |= BodyFlag.BULLET;
     if (allowSleep) flags |= BodyFlag.ALLOW_SLEEP;
     bodies.flags[b] = flags;
-    makeRotInto(angle, rotScratch);
+    const rot = makeRotInto(angle, this.#rot);
     bodies.px[b] = position.x;
     bodies.py[b] = position.y;
-    bodies.qc[b] = rotScratch.c;
-    bodies.qs[b] = rotScratch.s;
+    bodies.qc[b] = rot.c;
+    bodies.qs[b] = rot.s;
     if (kind !== BodyKind.STATIC) {
       const s = b * S.STRIDE;
       bodies.state[s + S.VX] = v.x;
@@ -286,16 +268,12 @@ export class World {
     this.handles.bodies[b] = undefined;
   }
 
-  /** Creates a joint (see JointDef for the types and their options); it wakes both bodies. */
-  createJoint(def: DistanceJointDef): DistanceJoint;
-  createJoint(def: RevoluteJointDef): RevoluteJoint;
-  createJoint(def: PrismaticJointDef): PrismaticJoint;
-  createJoint(def: WeldJointDef): WeldJoint;
-  createJoint(def: WheelJointDef): WheelJoint;
-  createJoint(def: MouseJointDef): MouseJoint;
-  createJoint(def: MotorJointDef): MotorJoint;
-  createJoint(def: JointDef): Joint;
-  createJoint(def: JointDef): Joint {
+  /**
+   * Creates a joint of the definition's `type`, and returns it typed as that type's class: a
+   * RevoluteJointDef (`type: 'revolute'`) makes a RevoluteJoint, and so on for each JointDef. It
+   * wakes both bodies.
+   */
+  createJoint<T extends JointType>(def: JointTypes[T]['def'] & { type: T }): JointTypes[T]['joint'] {
     this.checkUnlocked();
     checkRoom('joints', this.core.joints.length);
     const joint = buildJoint(this, def);
@@ -315,7 +293,8 @@ export class World {
     }
     core.wake(a);
     core.wake(b);
-    return joint;
+    // the joint of the definition's type (registry.ts)
+    return joint as JointTypes[T]['joint'];
   }
 
   /** Destroys a joint and wakes its bodies. */

@@ -1,13 +1,34 @@
 import type { Body } from '../api/body';
 import type { World } from '../api/world';
 import { checkBoolean, FulcrumError } from '../core/errors';
-import { checkHertz, checkLength, checkNonNegativeRate } from '../core/limits';
+import { checkCoordinates, checkHertz, checkLength, checkNonNegativeRate } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import type { JointContext } from '../solver/joint-context';
 import { CLOSURE_REGULARIZATION } from '../solver/joint-tree';
 import { makeSoftness, type Softness, springImpulse } from '../solver/softness';
 import { S } from '../store/body-store';
 import { Joint } from './joint';
+import {
+  BASE_KEYS,
+  type BaseDef,
+  checkOrder,
+  type JointKind,
+  jointBodies,
+  optionalBoolean,
+  optionalNumber,
+  SPRING_KEYS,
+  type SpringDef,
+} from './joint-def';
+
+/** A distance joint (see DistanceJoint): anchors in the bodies' frames; `length` defaults to their distance now. */
+export interface DistanceJointDef extends BaseDef, SpringDef {
+  type: 'distance';
+  localAnchorA?: Vec2;
+  localAnchorB?: Vec2;
+  length?: number;
+  minLength?: number;
+  maxLength?: number;
+}
 
 /** @internal */
 export interface DistanceOptions {
@@ -320,3 +341,43 @@ export class DistanceJoint extends Joint {
     }
   }
 }
+
+/** @internal The distance joint's kind (see registry.ts): its keys, defaults and validation. */
+export const distanceKind: JointKind<DistanceJointDef, DistanceJoint> = Object.freeze({
+  className: 'DistanceJoint',
+  jointClass: DistanceJoint,
+  keys: Object.freeze([
+    ...BASE_KEYS,
+    'localAnchorA',
+    'localAnchorB',
+    'length',
+    'minLength',
+    'maxLength',
+    ...SPRING_KEYS,
+  ]),
+  build(world: World, def: DistanceJointDef): DistanceJoint {
+    const { a, b, collide } = jointBodies(world, def);
+    const la =
+      def.localAnchorA === undefined ? { x: 0, y: 0 } : checkCoordinates('localAnchorA', def.localAnchorA);
+    const lb =
+      def.localAnchorB === undefined ? { x: 0, y: 0 } : checkCoordinates('localAnchorB', def.localAnchorB);
+    const pa = a.getWorldPoint(la);
+    const pb = b.getWorldPoint(lb);
+    const current = Math.sqrt((pb.x - pa.x) * (pb.x - pa.x) + (pb.y - pa.y) * (pb.y - pa.y));
+    const length = optionalNumber(checkLength, 'length', def.length, current);
+    const minLength = optionalNumber(checkLength, 'minLength', def.minLength, 0);
+    const maxLength =
+      def.maxLength === undefined || def.maxLength === Number.POSITIVE_INFINITY
+        ? Number.POSITIVE_INFINITY
+        : checkLength('maxLength', def.maxLength);
+    checkOrder('minLength', minLength, 'maxLength', maxLength);
+    return new DistanceJoint(world, a, b, la, lb, collide, def.userData, {
+      length,
+      minLength,
+      maxLength,
+      enableSpring: optionalBoolean('enableSpring', def.enableSpring, false),
+      hertz: optionalNumber(checkHertz, 'hertz', def.hertz, 0),
+      dampingRatio: optionalNumber(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 0),
+    });
+  },
+});

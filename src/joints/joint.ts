@@ -7,13 +7,7 @@ import type { JointContext } from '../solver/joint-context';
 import { relativeAngle } from '../solver/joint-math';
 import { S } from '../store/body-store';
 import type { WorldCore } from '../world/world-core';
-
-export type JointType = 'distance' | 'revolute' | 'prismatic' | 'weld' | 'wheel' | 'mouse' | 'motor';
-
-/** prepareBase's body data and anchors, in the hinge batch's layout, and its local anchors */
-const baseScratch = new Float64Array(H.STRIDE);
-const anchorScratch = new Float64Array(Anchor.STRIDE);
-const idScratch = new Int32Array(2);
+import type { JointType } from './registry';
 
 /**
  * Base of every joint: two bodies, an anchor on each (in the body's frame, relative to its origin),
@@ -159,8 +153,9 @@ export abstract class Joint {
 
   /** @internal Reads body data and anchors for this step. */
   prepareBase(ctx: JointContext): void {
-    const d = baseScratch;
-    this.writeBase(ctx, d, idScratch, anchorScratch, 0);
+    const work = this.core.work;
+    const d = work.jointRecord;
+    this.writeBase(ctx, d, work.jointIds, work.jointAnchors, 0);
     this.mA = d[H.MA];
     this.iA = d[H.IA];
     this.mB = d[H.MB];
@@ -201,10 +196,16 @@ export abstract class Joint {
     anchors[k + Anchor.AY] = this.localAnchorAy;
     anchors[k + Anchor.BX] = this.localAnchorBx;
     anchors[k + Anchor.BY] = this.localAnchorBy;
-    writeStepData(ctx, ids, anchors, d, i, i + 1);
+    writeStepData(ctx, this.core.work.pointRows, ids, anchors, d, i, i + 1);
   }
 
-  /** @internal Rotates the anchors by the bodies' rotation so far in the step and measures their separation. */
+  /**
+   * @internal Rotates the anchors by the bodies' rotation so far in the step and measures their
+   * separation: PointRows.turnedX, turnedY and separation, written out. Every joint's warm start and
+   * solve inline this, and each call would cost their inlining budgets (V8 inlines up to 920 bytes
+   * of bytecode into a function; a weld's solve is at 860 with this as it is): through the methods,
+   * a grid of welds took 1.06x the instructions a step (1.27x with the weld's rows through them too).
+   */
   protected updateAnchors(state: Float64Array): void {
     const sa = this.a * S.STRIDE;
     const sb = this.b * S.STRIDE;
@@ -318,7 +319,7 @@ export abstract class Joint {
     err: Float64Array,
     j: number,
     row: number,
-    jac: Float64Array,
+    jac: ArrayLike<number>,
     slop: number,
     roomLower: number,
     roomUpper: number,
@@ -379,19 +380,7 @@ export abstract class Joint {
 
   /** @internal Writes the two point rows (anchor B minus anchor A) of tree joint `j`; anchors must be current. */
   protected fillPointRows(jA: Float64Array, jB: Float64Array, err: Float64Array, j: number): void {
-    const m = 9 * j;
-    jA[m] = -1;
-    jA[m + 1] = 0;
-    jA[m + 2] = this.rAy;
-    jA[m + 3] = 0;
-    jA[m + 4] = -1;
-    jA[m + 5] = -this.rAx;
-    jB[m] = 1;
-    jB[m + 1] = 0;
-    jB[m + 2] = -this.rBy;
-    jB[m + 3] = 0;
-    jB[m + 4] = 1;
-    jB[m + 5] = this.rBx;
+    this.core.work.pointRows.writeJacobian(jA, jB, 9 * j, this.rAx, this.rAy, this.rBx, this.rBy);
     err[3 * j] = this.sepX;
     err[3 * j + 1] = this.sepY;
     // a third row of zeros, which a weld overwrites with its angular row

@@ -6,6 +6,28 @@ import type { JointContext } from '../solver/joint-context';
 import { relativeAngle, unwindAngle } from '../solver/joint-math';
 import { S } from '../store/body-store';
 import { Joint } from './joint';
+import {
+  BASE_KEYS,
+  type BaseDef,
+  checkFraction,
+  currentAngle,
+  type JointKind,
+  jointBodies,
+  optionalNumber,
+} from './joint-def';
+
+/**
+ * A motor joint (see MotorJoint); the offsets default to B's place and angle relative to A now, the
+ * force and torque to 1, the correction factor to 0.3.
+ */
+export interface MotorJointDef extends BaseDef {
+  type: 'motor';
+  linearOffset?: Vec2;
+  angularOffset?: number;
+  maxForce?: number;
+  maxTorque?: number;
+  correctionFactor?: number;
+}
 
 /** @internal */
 export interface MotorOptions {
@@ -166,3 +188,41 @@ export class MotorJoint extends Joint {
     }
   }
 }
+
+/** `p` in `body`'s frame, unchecked: B's centre may lie beyond the range getLocalPoint accepts */
+function localPointOf(body: Body, p: Vec2): Vec2 {
+  const q = body.rotation;
+  const o = body.position;
+  const dx = p.x - o.x;
+  const dy = p.y - o.y;
+  return { x: q.c * dx + q.s * dy, y: -q.s * dx + q.c * dy };
+}
+
+/** @internal The motor joint's kind (see registry.ts): its keys, defaults and validation. */
+export const motorKind: JointKind<MotorJointDef, MotorJoint> = Object.freeze({
+  className: 'MotorJoint',
+  jointClass: MotorJoint,
+  keys: Object.freeze([
+    ...BASE_KEYS,
+    'linearOffset',
+    'angularOffset',
+    'maxForce',
+    'maxTorque',
+    'correctionFactor',
+  ]),
+  build(world: World, def: MotorJointDef): MotorJoint {
+    const { a, b, collide } = jointBodies(world, def);
+    const offset =
+      def.linearOffset === undefined
+        ? localPointOf(a, b.worldCenter)
+        : checkCoordinates('linearOffset', def.linearOffset);
+    return new MotorJoint(world, a, b, collide, def.userData, {
+      linearOffsetX: offset.x,
+      linearOffsetY: offset.y,
+      angularOffset: optionalNumber(checkAngle, 'angularOffset', def.angularOffset, currentAngle(a, b)),
+      maxForce: optionalNumber(checkNonNegativeForce, 'maxForce', def.maxForce, 1),
+      maxTorque: optionalNumber(checkNonNegativeForce, 'maxTorque', def.maxTorque, 1),
+      correctionFactor: optionalNumber(checkFraction, 'correctionFactor', def.correctionFactor, 0.3),
+    });
+  },
+});

@@ -1,12 +1,26 @@
 import type { Body } from '../api/body';
 import type { World } from '../api/world';
-import { checkCoordinates } from '../core/limits';
+import { checkCoordinates, checkHertz, checkNonNegativeForce, checkNonNegativeRate } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import type { JointContext } from '../solver/joint-context';
-import { solve22, solved } from '../solver/joint-math';
 import { makeSoftness, type Softness } from '../solver/softness';
 import { S } from '../store/body-store';
 import { Joint } from './joint';
+import { type JointKind, optionalNumber } from './joint-def';
+
+/**
+ * A mouse joint (see MouseJoint): one body and a target; `maxForce` defaults to 1000 times the
+ * body's mass (at least 1 kg), the spring to 5 Hz, damping ratio 0.7.
+ */
+export interface MouseJointDef {
+  type: 'mouse';
+  body: Body;
+  target: Vec2;
+  maxForce?: number;
+  hertz?: number;
+  dampingRatio?: number;
+  userData?: unknown;
+}
 
 /** @internal */
 export interface MouseOptions {
@@ -91,6 +105,7 @@ export class MouseJoint extends Joint {
 
   /** @internal */
   solve(ctx: JointContext, _useBias: boolean): void {
+    const rows = this.core.work.pointRows;
     const state = ctx.state;
     this.updateAnchors(state);
     const sb = this.b * S.STRIDE;
@@ -109,11 +124,13 @@ export class MouseJoint extends Joint {
     const k11 = mB + rBy * rBy * iB;
     const k12 = -rBy * rBx * iB;
     const k22 = mB + rBx * rBx * iB;
-    solve22(k11, k12, k22, cdotX + this.soft.biasRate * cx, cdotY + this.soft.biasRate * cy);
+    const det = rows.inverseDeterminant(k11, k12, k22);
+    const bx = cdotX + this.soft.biasRate * cx;
+    const by = cdotY + this.soft.biasRate * cy;
     const oldX = this.impulseX;
     const oldY = this.impulseY;
-    let ix = oldX - this.soft.massScale * solved.x - this.soft.impulseScale * oldX;
-    let iy = oldY - this.soft.massScale * solved.y - this.soft.impulseScale * oldY;
+    let ix = oldX - this.soft.massScale * rows.solveX(det, k12, k22, bx, by) - this.soft.impulseScale * oldX;
+    let iy = oldY - this.soft.massScale * rows.solveY(det, k11, k12, bx, by) - this.soft.impulseScale * oldY;
     const max = this.o.maxForce * ctx.h;
     const len2 = ix * ix + iy * iy;
     if (len2 > max * max) {
@@ -133,3 +150,23 @@ export class MouseJoint extends Joint {
     state[sb + S.W] = w;
   }
 }
+
+/** @internal The mouse joint's kind (see registry.ts): its keys, defaults and validation. */
+export const mouseKind: JointKind<MouseJointDef, MouseJoint> = Object.freeze({
+  className: 'MouseJoint',
+  jointClass: MouseJoint,
+  keys: Object.freeze(['type', 'body', 'target', 'maxForce', 'hertz', 'dampingRatio', 'userData']),
+  build(world: World, def: MouseJointDef): MouseJoint {
+    world.checkBody('body', def.body);
+    const body = def.body;
+    const target = checkCoordinates('target', def.target);
+    const mass = body.mass;
+    return new MouseJoint(world, body, body.getLocalPoint(target), def.userData, {
+      targetX: target.x,
+      targetY: target.y,
+      maxForce: optionalNumber(checkNonNegativeForce, 'maxForce', def.maxForce, 1000 * Math.max(mass, 1)),
+      hertz: optionalNumber(checkHertz, 'hertz', def.hertz, 5),
+      dampingRatio: optionalNumber(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 0.7),
+    });
+  },
+});

@@ -1,13 +1,39 @@
 import type { Body } from '../api/body';
 import type { World } from '../api/world';
 import { checkBoolean } from '../core/errors';
-import { checkNonNegativeForce, checkRate } from '../core/limits';
+import { checkAngle, checkNonNegativeForce, checkRate } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import { motorImpulse } from '../solver/axial-rows';
 import type { JointContext } from '../solver/joint-context';
 import { relativeAngle, unwindAngle } from '../solver/joint-math';
 import { S } from '../store/body-store';
-import { SliderJoint, type SliderOptions } from './slider-joint';
+import {
+  ANCHOR_KEYS,
+  type AnchorDef,
+  anchorsOf,
+  BASE_KEYS,
+  type BaseDef,
+  currentAngle,
+  type JointKind,
+  jointBodies,
+  optionalBoolean,
+  optionalNumber,
+  type SpringDef,
+} from './joint-def';
+import { SLIDER_KEYS, SliderJoint, type SliderOptions, sliderOptions } from './slider-joint';
+
+/** A prismatic joint (see PrismaticJoint); `referenceAngle` defaults to the bodies' angle now. */
+export interface PrismaticJointDef extends BaseDef, AnchorDef, SpringDef {
+  type: 'prismatic';
+  axis: Vec2;
+  referenceAngle?: number;
+  enableLimit?: boolean;
+  lower?: number;
+  upper?: number;
+  enableMotor?: boolean;
+  motorSpeed?: number;
+  maxMotorForce?: number;
+}
 
 /** @internal */
 export interface PrismaticOptions {
@@ -183,3 +209,30 @@ export class PrismaticJoint extends SliderJoint {
     }
   }
 }
+
+/** @internal The prismatic joint's kind (see registry.ts): its keys, defaults and validation. */
+export const prismaticKind: JointKind<PrismaticJointDef, PrismaticJoint> = Object.freeze({
+  className: 'PrismaticJoint',
+  jointClass: PrismaticJoint,
+  keys: Object.freeze([
+    ...BASE_KEYS,
+    ...ANCHOR_KEYS,
+    ...SLIDER_KEYS,
+    'referenceAngle',
+    'enableMotor',
+    'motorSpeed',
+    'maxMotorForce',
+  ]),
+  build(world: World, def: PrismaticJointDef): PrismaticJoint {
+    const { a, b, collide } = jointBodies(world, def);
+    const { la, lb } = anchorsOf(def, a, b);
+    // no spring unless asked for
+    const slider = sliderOptions(def, a, false, 0, 0);
+    return new PrismaticJoint(world, a, b, la, lb, collide, def.userData, slider, {
+      referenceAngle: optionalNumber(checkAngle, 'referenceAngle', def.referenceAngle, currentAngle(a, b)),
+      enableMotor: optionalBoolean('enableMotor', def.enableMotor, false),
+      motorSpeed: optionalNumber(checkRate, 'motorSpeed', def.motorSpeed, 0),
+      maxMotorForce: optionalNumber(checkNonNegativeForce, 'maxMotorForce', def.maxMotorForce, 0),
+    });
+  },
+});

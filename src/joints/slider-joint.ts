@@ -8,6 +8,56 @@ import type { JointContext } from '../solver/joint-context';
 import { makeSoftness, type Softness, springImpulse } from '../solver/softness';
 import { S } from '../store/body-store';
 import { Joint } from './joint';
+import { checkOrder, optionalBoolean, optionalNumber, unitAxis } from './joint-def';
+
+/** @internal The options of a slider's definition (prismatic, wheel), as given. */
+export interface SliderDef {
+  axis: Vec2;
+  enableLimit?: boolean;
+  lower?: number;
+  upper?: number;
+  enableSpring?: boolean;
+  hertz?: number;
+  dampingRatio?: number;
+}
+
+/** @internal The keys of SliderDef. */
+export const SLIDER_KEYS: readonly string[] = Object.freeze([
+  'axis',
+  'enableLimit',
+  'lower',
+  'upper',
+  'enableSpring',
+  'hertz',
+  'dampingRatio',
+]);
+
+/**
+ * @internal The slider's options from a definition, checked, with the spring's defaults of the
+ * joint's type. The axis is turned into body A's frame.
+ */
+export function sliderOptions(
+  def: SliderDef,
+  bodyA: Body,
+  enableSpring: boolean,
+  hertz: number,
+  dampingRatio: number,
+): SliderOptions {
+  const axis = bodyA.getLocalVector(unitAxis(def.axis));
+  const lower = optionalNumber(checkCoordinate, 'lower', def.lower, 0);
+  const upper = optionalNumber(checkCoordinate, 'upper', def.upper, 0);
+  checkOrder('lower', lower, 'upper', upper);
+  return {
+    localAxisX: axis.x,
+    localAxisY: axis.y,
+    enableLimit: optionalBoolean('enableLimit', def.enableLimit, false),
+    lower,
+    upper,
+    enableSpring: optionalBoolean('enableSpring', def.enableSpring, enableSpring),
+    hertz: optionalNumber(checkHertz, 'hertz', def.hertz, hertz),
+    dampingRatio: optionalNumber(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, dampingRatio),
+  };
+}
 
 /** @internal */
 export interface SliderOptions {

@@ -1,12 +1,32 @@
 import type { Body } from '../api/body';
 import type { World } from '../api/world';
-import { checkHertz, checkNonNegativeRate } from '../core/limits';
+import { checkAngle, checkHertz, checkNonNegativeRate } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import type { JointContext } from '../solver/joint-context';
 import { relativeAngle, solveSymmetric33, unwindAngle } from '../solver/joint-math';
 import { makeSoftness, type Softness, springInvMass } from '../solver/softness';
 import { S } from '../store/body-store';
 import { Joint } from './joint';
+import {
+  ANCHOR_KEYS,
+  type AnchorDef,
+  anchorsOf,
+  BASE_KEYS,
+  type BaseDef,
+  currentAngle,
+  type JointKind,
+  jointBodies,
+  optionalNumber,
+} from './joint-def';
+
+/** A weld joint (see WeldJoint): rigid unless given frequencies; `referenceAngle` defaults to the bodies' angle now. */
+export interface WeldJointDef extends BaseDef, AnchorDef {
+  type: 'weld';
+  referenceAngle?: number;
+  linearHertz?: number;
+  angularHertz?: number;
+  dampingRatio?: number;
+}
 
 /** @internal */
 export interface WeldOptions {
@@ -249,3 +269,27 @@ export class WeldJoint extends Joint {
     state[sb + S.W] = wB + iB * (rBx * py - rBy * px + pw);
   }
 }
+
+/** @internal The weld joint's kind (see registry.ts): its keys, defaults and validation. */
+export const weldKind: JointKind<WeldJointDef, WeldJoint> = Object.freeze({
+  className: 'WeldJoint',
+  jointClass: WeldJoint,
+  keys: Object.freeze([
+    ...BASE_KEYS,
+    ...ANCHOR_KEYS,
+    'referenceAngle',
+    'linearHertz',
+    'angularHertz',
+    'dampingRatio',
+  ]),
+  build(world: World, def: WeldJointDef): WeldJoint {
+    const { a, b, collide } = jointBodies(world, def);
+    const { la, lb } = anchorsOf(def, a, b);
+    return new WeldJoint(world, a, b, la, lb, collide, def.userData, {
+      referenceAngle: optionalNumber(checkAngle, 'referenceAngle', def.referenceAngle, currentAngle(a, b)),
+      linearHertz: optionalNumber(checkHertz, 'linearHertz', def.linearHertz, 0),
+      angularHertz: optionalNumber(checkHertz, 'angularHertz', def.angularHertz, 0),
+      dampingRatio: optionalNumber(checkNonNegativeRate, 'dampingRatio', def.dampingRatio, 1),
+    });
+  },
+});

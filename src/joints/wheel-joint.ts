@@ -6,7 +6,31 @@ import type { Vec2 } from '../math/vec2';
 import { motorImpulse } from '../solver/axial-rows';
 import type { JointContext } from '../solver/joint-context';
 import { S } from '../store/body-store';
-import { SliderJoint, type SliderOptions } from './slider-joint';
+import {
+  ANCHOR_KEYS,
+  type AnchorDef,
+  anchorsOf,
+  BASE_KEYS,
+  type BaseDef,
+  type JointKind,
+  jointBodies,
+  optionalBoolean,
+  optionalNumber,
+  type SpringDef,
+} from './joint-def';
+import { SLIDER_KEYS, SliderJoint, type SliderOptions, sliderOptions } from './slider-joint';
+
+/** A wheel joint (see WheelJoint): its suspension spring is on by default, at 1 Hz, damping ratio 0.7. */
+export interface WheelJointDef extends BaseDef, AnchorDef, SpringDef {
+  type: 'wheel';
+  axis: Vec2;
+  enableMotor?: boolean;
+  motorSpeed?: number;
+  maxMotorTorque?: number;
+  enableLimit?: boolean;
+  lower?: number;
+  upper?: number;
+}
 
 /** @internal */
 export interface WheelOptions {
@@ -168,3 +192,28 @@ export class WheelJoint extends SliderJoint {
     this.solveSlider(ctx, useBias);
   }
 }
+
+/** @internal The wheel joint's kind (see registry.ts): its keys, defaults and validation. */
+export const wheelKind: JointKind<WheelJointDef, WheelJoint> = Object.freeze({
+  className: 'WheelJoint',
+  jointClass: WheelJoint,
+  keys: Object.freeze([
+    ...BASE_KEYS,
+    ...ANCHOR_KEYS,
+    ...SLIDER_KEYS,
+    'enableMotor',
+    'motorSpeed',
+    'maxMotorTorque',
+  ]),
+  build(world: World, def: WheelJointDef): WheelJoint {
+    const { a, b, collide } = jointBodies(world, def);
+    const { la, lb } = anchorsOf(def, a, b);
+    // a suspension: the spring on by default
+    const slider = sliderOptions(def, a, true, 1, 0.7);
+    return new WheelJoint(world, a, b, la, lb, collide, def.userData, slider, {
+      enableMotor: optionalBoolean('enableMotor', def.enableMotor, false),
+      motorSpeed: optionalNumber(checkRate, 'motorSpeed', def.motorSpeed, 0),
+      maxMotorTorque: optionalNumber(checkNonNegativeForce, 'maxMotorTorque', def.maxMotorTorque, 0),
+    });
+  },
+});

@@ -3,6 +3,7 @@ import { IndexBound } from '../core/index-bound';
 import { S } from '../store/body-store';
 import { GraphColoring } from './graph-color';
 import type { JointContext } from './joint-context';
+import { PointRows } from './point-rows';
 import type { Softness } from './softness';
 import type { SolverJoint } from './solver-joint';
 
@@ -62,6 +63,7 @@ export enum Anchor {
  */
 export function writeStepData(
   ctx: JointContext,
+  rows: PointRows,
   ids: Int32Array,
   anchors: Float64Array,
   d: Float64Array,
@@ -87,7 +89,7 @@ export function writeStepData(
     anchors[k + Anchor.CBX] = anchors[k + Anchor.BX] - lcx[b];
     anchors[k + Anchor.CBY] = anchors[k + Anchor.BY] - lcy[b];
   }
-  turnStepData(ctx, ids, anchors, d, from, to, stride);
+  turnStepData(ctx, rows, ids, anchors, d, from, to, stride);
 }
 
 /**
@@ -98,6 +100,7 @@ export function writeStepData(
  */
 export function turnStepData(
   ctx: JointContext,
+  rows: PointRows,
   ids: Int32Array,
   anchors: Float64Array,
   d: Float64Array,
@@ -118,14 +121,14 @@ export function turnStepData(
     let s = qs[a];
     let x = anchors[k + Anchor.CAX];
     let y = anchors[k + Anchor.CAY];
-    const rAx = c * x - s * y;
-    const rAy = s * x + c * y;
+    const rAx = rows.turnedX(c, s, x, y);
+    const rAy = rows.turnedY(c, s, x, y);
     c = qc[b];
     s = qs[b];
     x = anchors[k + Anchor.CBX];
     y = anchors[k + Anchor.CBY];
-    const rBx = c * x - s * y;
-    const rBy = s * x + c * y;
+    const rBx = rows.turnedX(c, s, x, y);
+    const rBy = rows.turnedY(c, s, x, y);
     d[base + H.RAX0] = rAx;
     d[base + H.RAY0] = rAy;
     d[base + H.RBX0] = rBx;
@@ -137,7 +140,7 @@ export function turnStepData(
     d[base + H.RAY] = rAy;
     d[base + H.RBX] = rBx;
     d[base + H.RBY] = rBy;
-    storeInverseMass(d, base, rAx, rAy, rBx, rBy);
+    storeInverseMass(rows, d, base, rAx, rAy, rBx, rBy);
   }
 }
 
@@ -149,7 +152,10 @@ export function turnStepData(
  * (SolverJoint.packHinge, in place of prepare). Their impulses stay here from step to step (a hinge's
  * reaction force reads them here) and go back to the joints when the batch is made anew
  * (SolverJoint.unpackHinge): handing them over every step took a call per hinge (3 % of a hinge grid's
- * step). The arithmetic is the revolute joint's point rows, term for term.
+ * step). The arithmetic is the point rows' (solver/point-rows.ts), as the revolute joint's, but for
+ * two things kept for the simulation's bits: the batch keeps K's inverse and solves with it, where
+ * the joint solves K by Cramer's rule, and it bounds the pull row by row, where the joint bounds it
+ * as a whole.
  * @internal
  */
 export class HingeBatch {
@@ -166,6 +172,8 @@ export class HingeBatch {
   private spareJoints: SolverJoint[] = [];
   /** the colouring that orders the hinges (see orderByColor) */
   private readonly coloring = new GraphColoring();
+  /** the point rows' maths (a # field, no property key: the snapshot leaves it out) */
+  readonly #rows = new PointRows();
   /** the active joints that are not in the batch, in their order */
   readonly otherActive: SolverJoint[] = [];
   /** 1/h of the last step the batch solved (the hinges' reaction forces) */
@@ -195,7 +203,7 @@ export class HingeBatch {
     const poseEpoch = ctx.poseEpoch;
     const carry = this.carried && this.stepPoseEpoch === poseEpoch;
     if (rebuilt) this.classify(active, iterative, ctx, carry);
-    else if (!carry) turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count);
+    else if (!carry) turnStepData(ctx, this.#rows, this.ids, this.anchors, this.data, 0, this.count);
     this.carried = false;
     this.stepPoseEpoch = poseEpoch;
     for (const joint of this.otherActive) joint.prepare(ctx);
@@ -298,6 +306,7 @@ export class HingeBatch {
     // nothing to do, and in a world without hinges these calls never get hot: the interpreter would
     // put the doubles read below on the heap at every call
     if (this.count === 0) return;
+    const rows = this.#rows;
     const d = this.data;
     const ids = this.ids;
     const v2 = speedLimit * speedLimit;
@@ -313,21 +322,23 @@ export class HingeBatch {
       const rAy = d[base + H.RAY];
       const rBx = d[base + H.RBX];
       const rBy = d[base + H.RBY];
-      const px = d[base + H.LX];
-      const py = d[base + H.LY];
       const vAx = state[sa + S.VX];
       const vAy = state[sa + S.VY];
       const wA = state[sa + S.W];
       const vBx = state[sb + S.VX];
       const vBy = state[sb + S.VY];
       const wB = state[sb + S.W];
-      // `+ 0` as the revolute joint's warm start adds its (here zero) axial impulse: the same bits
+      const px = d[base + H.LX];
+      const py = d[base + H.LY];
+      // applyPointTurnImpulse with a zero axial impulse, as the revolute joint's warm start adds its
+      // own (the same bits), worked out before it is stored: applied and then taken back when the
+      // guard fails, it cost a hinge grid 1.05x the step
       const nAx = vAx - mA * px;
       const nAy = vAy - mA * py;
-      const nwA = wA - iA * (rAx * py - rAy * px + 0);
+      const nwA = wA - iA * (rows.anchorMoment(rAx, rAy, px, py) + 0);
       const nBx = vBx + mB * px;
       const nBy = vBy + mB * py;
-      const nwB = wB + iB * (rBx * py - rBy * px + 0);
+      const nwB = wB + iB * (rows.anchorMoment(rBx, rBy, px, py) + 0);
       // written so that NaN fails the test too
       if (
         nAx * nAx + nAy * nAy <= v2 &&
@@ -354,6 +365,7 @@ export class HingeBatch {
    */
   solve(state: Float64Array, soft: Softness, pushLimit: number): void {
     if (this.count === 0) return; // as in warmStart
+    const rows = this.#rows;
     const d = this.data;
     const ids = this.ids;
     const biasRate = soft.biasRate;
@@ -374,27 +386,22 @@ export class HingeBatch {
       const vBy = state[sb + S.VY];
       const wB = state[sb + S.W];
       // the pull bounded, as in the other joints (see JointTree's pushLimit)
-      const pullX = biasRate * (state[sb + S.DPX] - state[sa + S.DPX] + d[base + H.DCX] + rBx - rAx);
-      const pullY = biasRate * (state[sb + S.DPY] - state[sa + S.DPY] + d[base + H.DCY] + rBy - rAy);
-      const bx = vBx - wB * rBy - vAx + wA * rAy + Math.max(-pushLimit, Math.min(pullX, pushLimit));
-      const by = vBy + wB * rBx - vAy - wA * rAx + Math.max(-pushLimit, Math.min(pullY, pushLimit));
+      const errorX = rows.separation(state[sa + S.DPX], state[sb + S.DPX], d[base + H.DCX], rAx, rBx);
+      const errorY = rows.separation(state[sa + S.DPY], state[sb + S.DPY], d[base + H.DCY], rAy, rBy);
+      const bx = rows.speedX(vAx, wA, rAy, vBx, wB, rBy) + rows.boundedBias(biasRate, errorX, pushLimit);
+      const by = rows.speedY(vAy, wA, rAx, vBy, wB, rBx) + rows.boundedBias(biasRate, errorY, pushLimit);
       const lx = d[base + H.LX];
       const ly = d[base + H.LY];
       const m12 = d[base + H.M12];
-      const px = -massScale * (d[base + H.M11] * bx + m12 * by) - impulseScale * lx;
-      const py = -massScale * (m12 * bx + d[base + H.M22] * by) - impulseScale * ly;
+      const px = rows.softImpulse(massScale, impulseScale, d[base + H.M11] * bx + m12 * by, lx);
+      const py = rows.softImpulse(massScale, impulseScale, m12 * bx + d[base + H.M22] * by, ly);
       d[base + H.LX] = lx + px;
       d[base + H.LY] = ly + py;
       const mA = d[base + H.MA];
       const iA = d[base + H.IA];
       const mB = d[base + H.MB];
       const iB = d[base + H.IB];
-      state[sa + S.VX] = vAx - mA * px;
-      state[sa + S.VY] = vAy - mA * py;
-      state[sa + S.W] = wA - iA * (rAx * py - rAy * px);
-      state[sb + S.VX] = vBx + mB * px;
-      state[sb + S.VY] = vBy + mB * py;
-      state[sb + S.W] = wB + iB * (rBx * py - rBy * px);
+      rows.applyImpulse(state, sa, sb, mA, iA, mB, iB, rAx, rAy, rBx, rBy, px, py);
     }
   }
 
@@ -409,6 +416,7 @@ export class HingeBatch {
    */
   relax(state: Float64Array, last: boolean): void {
     if (this.count === 0) return; // as in warmStart
+    const rows = this.#rows;
     const d = this.data;
     const ids = this.ids;
     for (let i = 0, n = this.count & IndexBound.MAX; i < n; i++) {
@@ -427,12 +435,12 @@ export class HingeBatch {
       const rBy0 = d[base + H.RBY0];
       let c = state[sa + S.DQC];
       let s = state[sa + S.DQS];
-      const rAx = c * rAx0 - s * rAy0;
-      const rAy = s * rAx0 + c * rAy0;
+      const rAx = rows.turnedX(c, s, rAx0, rAy0);
+      const rAy = rows.turnedY(c, s, rAx0, rAy0);
       c = state[sb + S.DQC];
       s = state[sb + S.DQS];
-      const rBx = c * rBx0 - s * rBy0;
-      const rBy = s * rBx0 + c * rBy0;
+      const rBx = rows.turnedX(c, s, rBx0, rBy0);
+      const rBy = rows.turnedY(c, s, rBx0, rBy0);
       d[base + H.RAX] = rAx;
       d[base + H.RAY] = rAy;
       d[base + H.RBX] = rBx;
@@ -447,35 +455,25 @@ export class HingeBatch {
       }
       // K's inverse, as storeInverseMass, but kept in locals for the impulse below (reading it back
       // from the record cost the grid 3 %)
-      const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
-      const k12 = -rAy * rAx * iA - rBy * rBx * iB;
-      const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
-      let det = k11 * k22 - k12 * k12;
-      if (det !== 0) det = 1 / det;
+      const k11 = rows.massDiagonal(mA + mB, iA, rAy, iB, rBy);
+      const k12 = rows.massCoupling(iA, rAx, rAy, iB, rBx, rBy);
+      const k22 = rows.massDiagonal(mA + mB, iA, rAx, iB, rBx);
+      const det = rows.inverseDeterminant(k11, k12, k22);
       const m11 = det * k22;
       const m12 = -det * k12;
       const m22 = det * k11;
       d[base + H.M11] = m11;
       d[base + H.M12] = m12;
       d[base + H.M22] = m22;
-      const vAx = state[sa + S.VX];
-      const vAy = state[sa + S.VY];
       const wA = state[sa + S.W];
-      const vBx = state[sb + S.VX];
-      const vBy = state[sb + S.VY];
       const wB = state[sb + S.W];
-      const bx = vBx - wB * rBy - vAx + wA * rAy;
-      const by = vBy + wB * rBx - vAy - wA * rAx;
+      const bx = rows.speedX(state[sa + S.VX], wA, rAy, state[sb + S.VX], wB, rBy);
+      const by = rows.speedY(state[sa + S.VY], wA, rAx, state[sb + S.VY], wB, rBx);
       const px = -(m11 * bx + m12 * by);
       const py = -(m12 * bx + m22 * by);
       d[base + H.LX] += px;
       d[base + H.LY] += py;
-      state[sa + S.VX] = vAx - mA * px;
-      state[sa + S.VY] = vAy - mA * py;
-      state[sa + S.W] = wA - iA * (rAx * py - rAy * px);
-      state[sb + S.VX] = vBx + mB * px;
-      state[sb + S.VY] = vBy + mB * py;
-      state[sb + S.W] = wB + iB * (rBx * py - rBy * px);
+      rows.applyImpulse(state, sa, sb, mA, iA, mB, iB, rAx, rAy, rBx, rBy, px, py);
     }
     if (last) this.carried = true;
   }
@@ -483,6 +481,7 @@ export class HingeBatch {
 
 /** Writes the inverse of the hinge's point-row effective mass K at the turned anchors to `d` at `base`. */
 function storeInverseMass(
+  rows: PointRows,
   d: Float64Array,
   base: number,
   rAx: number,
@@ -494,11 +493,10 @@ function storeInverseMass(
   const iA = d[base + H.IA];
   const mB = d[base + H.MB];
   const iB = d[base + H.IB];
-  const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
-  const k12 = -rAy * rAx * iA - rBy * rBx * iB;
-  const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
-  let det = k11 * k22 - k12 * k12;
-  if (det !== 0) det = 1 / det;
+  const k11 = rows.massDiagonal(mA + mB, iA, rAy, iB, rBy);
+  const k12 = rows.massCoupling(iA, rAx, rAy, iB, rBx, rBy);
+  const k22 = rows.massDiagonal(mA + mB, iA, rAx, iB, rBx);
+  const det = rows.inverseDeterminant(k11, k12, k22);
   d[base + H.M11] = det * k22;
   d[base + H.M12] = -det * k12;
   d[base + H.M22] = det * k11;

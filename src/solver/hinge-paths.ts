@@ -3,6 +3,7 @@ import { IndexBound } from '../core/index-bound';
 import { S } from '../store/body-store';
 import { Anchor, H, turnStepData, writeStepData } from './hinge-batch';
 import type { JointContext } from './joint-context';
+import { PointRows } from './point-rows';
 import type { SolverJoint } from './solver-joint';
 
 /**
@@ -78,6 +79,8 @@ export class HingePaths {
   /** the hinges before the last clear, and whether add() laid them again in the same places */
   private readonly previous: SolverJoint[] = [];
   private sameLayout = false;
+  /** the point rows' maths (a # field, no property key: the snapshot leaves it out) */
+  readonly #rows = new PointRows();
 
   /** Empties the list (before a build adds the paths anew). */
   clear(): void {
@@ -143,8 +146,9 @@ export class HingePaths {
       (!this.laid || (this.sameLayout && this.count === this.previous.length));
     // the masses and centres change only with a body's mass, which lays the paths anew
     if (!carry) {
-      if (this.laid) writeStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
-      else turnStepData(ctx, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+      if (this.laid)
+        writeStepData(ctx, this.#rows, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+      else turnStepData(ctx, this.#rows, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
     }
     this.startFactored = carry;
     this.carried = false;
@@ -164,6 +168,7 @@ export class HingePaths {
    * the factorization itself.
    */
   factor(state: Float64Array, last: boolean): void {
+    const rows = this.#rows;
     const d = this.data;
     const ids = this.ids;
     // the previous hinge's anchor on the body after it, and its D⁻¹ (times 0 at a path's start)
@@ -190,27 +195,29 @@ export class HingePaths {
       const rBy0 = d[base + H.RBY0];
       let c = state[sa + S.DQC];
       let s = state[sa + S.DQS];
-      const rAx = c * rAx0 - s * rAy0;
-      const rAy = s * rAx0 + c * rAy0;
+      const rAx = rows.turnedX(c, s, rAx0, rAy0);
+      const rAy = rows.turnedY(c, s, rAx0, rAy0);
       c = state[sb + S.DQC];
       s = state[sb + S.DQS];
-      const rBx = c * rBx0 - s * rBy0;
-      const rBy = s * rBx0 + c * rBy0;
+      const rBx = rows.turnedX(c, s, rBx0, rBy0);
+      const rBy = rows.turnedY(c, s, rBx0, rBy0);
       d[base + H.RAX] = rAx;
       d[base + H.RAY] = rAy;
       d[base + H.RBX] = rBx;
       d[base + H.RBY] = rBy;
-      const dpx = state[sb + S.DPX] - state[sa + S.DPX];
-      const dpy = state[sb + S.DPY] - state[sa + S.DPY];
-      d[base + P.EX] = dpx + dcx + rBx - rAx;
-      d[base + P.EY] = dpy + dcy + rBy - rAy;
+      const dpAx = state[sa + S.DPX];
+      const dpAy = state[sa + S.DPY];
+      const dpBx = state[sb + S.DPX];
+      const dpBy = state[sb + S.DPY];
+      d[base + P.EX] = rows.separation(dpAx, dpBx, dcx, rAx, rBx);
+      d[base + P.EY] = rows.separation(dpAy, dpBy, dcy, rAy, rBy);
       if (last) {
         d[base + H.RAX0] = rAx;
         d[base + H.RAY0] = rAy;
         d[base + H.RBX0] = rBx;
         d[base + H.RBY0] = rBy;
-        d[base + H.DCX] = dcx + dpx;
-        d[base + H.DCY] = dcy + dpy;
+        d[base + H.DCX] = dcx + (dpBx - dpAx);
+        d[base + H.DCY] = dcy + (dpBy - dpAy);
       }
       // the coupling to the previous hinge through body A (B of that one): the velocity of this
       // hinge's rows per unit impulse on the previous one's, -(m 1 + i r⊥ q⊥ᵀ)
@@ -226,12 +233,11 @@ export class HingePaths {
       d[base + P.L12] = l12;
       d[base + P.L21] = l21;
       d[base + P.L22] = l22;
-      // the pivot: this hinge's own effective mass less what the previous hinges take of it
-      const d11 = mA + mB + iA * rAy * rAy + iB * rBy * rBy - (l11 * b11 + l12 * b12);
-      const d12 = -iA * rAx * rAy - iB * rBx * rBy - (l11 * b21 + l12 * b22);
-      const d22 = mA + mB + iA * rAx * rAx + iB * rBx * rBx - (l21 * b21 + l22 * b22);
-      let det = d11 * d22 - d12 * d12;
-      if (det !== 0) det = 1 / det;
+      // the pivot: this hinge's own effective mass K less what the previous hinges take of it
+      const d11 = rows.pathMassDiagonal(mA + mB, iA, rAy, iB, rBy) - (l11 * b11 + l12 * b12);
+      const d12 = rows.pathMassCoupling(iA, rAx, rAy, iB, rBx, rBy) - (l11 * b21 + l12 * b22);
+      const d22 = rows.pathMassDiagonal(mA + mB, iA, rAx, iB, rBx) - (l21 * b21 + l22 * b22);
+      const det = rows.inverseDeterminant(d11, d12, d22);
       e11 = det * d22;
       e12 = -det * d12;
       e22 = det * d11;
@@ -249,6 +255,7 @@ export class HingePaths {
    * (see JointTree.project; `first` as there).
    */
   project(state: Float64Array, biasRate: number, first: boolean): void {
+    const rows = this.#rows;
     const d = this.data;
     const limit = this.pushLimit;
     const ids = this.ids;
@@ -262,18 +269,13 @@ export class HingePaths {
       const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
       const wA = state[sa + S.W];
       const wB = state[sb + S.W];
+      // -(J v + bias): the speed with the bodies' roles swapped is -J v (see PointRows.speedX)
       const rx =
-        state[sa + S.VX] -
-        wA * d[base + H.RAY] -
-        state[sb + S.VX] +
-        wB * d[base + H.RBY] -
-        Math.max(-limit, Math.min(biasRate * d[base + P.EX], limit));
+        rows.speedX(state[sb + S.VX], wB, d[base + H.RBY], state[sa + S.VX], wA, d[base + H.RAY]) -
+        rows.boundedBias(biasRate, d[base + P.EX], limit);
       const ry =
-        state[sa + S.VY] +
-        wA * d[base + H.RAX] -
-        state[sb + S.VY] -
-        wB * d[base + H.RBX] -
-        Math.max(-limit, Math.min(biasRate * d[base + P.EY], limit));
+        rows.speedY(state[sb + S.VY], wB, d[base + H.RBX], state[sa + S.VY], wA, d[base + H.RAX]) -
+        rows.boundedBias(biasRate, d[base + P.EY], limit);
       const nx = rx - (d[base + P.L11] * yx + d[base + P.L12] * yy);
       yy = ry - (d[base + P.L21] * yx + d[base + P.L22] * yy);
       yx = nx;
@@ -313,12 +315,7 @@ export class HingePaths {
       d[base + H.LY] = keep * d[base + H.LY] + py;
       const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
       const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
-      state[sa + S.VX] -= mA * px;
-      state[sa + S.VY] -= mA * py;
-      state[sa + S.W] -= iA * (rAx * py - rAy * px);
-      state[sb + S.VX] += mB * px;
-      state[sb + S.VY] += mB * py;
-      state[sb + S.W] += iB * (rBx * py - rBy * px);
+      rows.applyImpulse(state, sa, sb, mA, iA, mB, iB, rAx, rAy, rBx, rBy, px, py);
     }
   }
 

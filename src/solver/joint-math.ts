@@ -1,16 +1,5 @@
 import { arcTangent2 } from '../math/arc-tangent';
 
-/** Scratch output of solve22 (no allocation). */
-export const solved = { x: 0, y: 0 };
-
-/** Solves [[a11, a12], [a12, a22]] (x, y) = (b1, b2) into `solved`; a singular matrix gives zeros. */
-export function solve22(a11: number, a12: number, a22: number, b1: number, b2: number): void {
-  let det = a11 * a22 - a12 * a12;
-  if (det !== 0) det = 1 / det;
-  solved.x = det * (a22 * b1 - a12 * b2);
-  solved.y = det * (a11 * b2 - a12 * b1);
-}
-
 /**
  * Solves the symmetric system [[a11, a12, a13], [a12, a22, a23], [a13, a23, a33]] x = b into `out`
  * by cofactors; a singular matrix gives zeros.

@@ -2,6 +2,7 @@ import { growF64, growI32, growU8 } from '../core/grow';
 import { BodyKind, S } from '../store/body-store';
 import { HingePaths } from './hinge-paths';
 import type { JointContext } from './joint-context';
+import { PointRows } from './point-rows';
 import type { SolverJoint } from './solver-joint';
 import { TreeAxials, type TreeSolve } from './tree-axials';
 
@@ -138,6 +139,14 @@ export class JointTree implements TreeSolve {
   private dInv = new Float64Array(32 * Block.SIZE);
   private l = new Float64Array(32 * 9);
   private x = new Float64Array(32 * Block.ROWS);
+  /**
+   * working memory of substitute (a node's values) and of invertBlock (a block under elimination);
+   * # fields, which are no property keys: the snapshot leaves them out
+   */
+  readonly #nodeValues = new Float64Array(Block.ROWS);
+  readonly #elimination = new Float64Array(Block.SIZE);
+  /** the rows' velocity bias (PointRows.boundedBias; a # field too) */
+  readonly #pointRows = new PointRows();
   /** @internal the solution vector of substitute (TreeSolve) */
   get solution(): Float64Array {
     return this.x;
@@ -710,7 +719,7 @@ export class JointTree implements TreeSolve {
     const l = this.l;
     for (let n = 0; n < nodes; n++) {
       const o = Block.SIZE * n;
-      invertBlock(d, dInv, o, this.nodeDim[n]);
+      invertBlock(d, dInv, o, this.nodeDim[n], this.#elimination);
       const p = parent[n];
       if (p === -1) continue;
       // H: the Jacobian block of the edge's joint at the edge's body, transposed when the body is
@@ -1030,6 +1039,7 @@ export class JointTree implements TreeSolve {
     const jB = this.jB;
     const err = this.err;
     const limit = this.pushLimit;
+    const pointRows = this.#pointRows;
     for (let j = 0; j < count; j++) {
       const sa = this.slotA[j] * S.STRIDE;
       const sb = this.slotB[j] * S.STRIDE;
@@ -1050,7 +1060,7 @@ export class JointTree implements TreeSolve {
         jB[m] * vBx +
         jB[m + 1] * vBy +
         jB[m + 2] * wB +
-        Math.max(-limit[e], Math.min(biasRate * err[e], limit[e]))
+        pointRows.boundedBias(biasRate, err[e], limit[e])
       );
       x[o + 1] = -(
         jA[m + 3] * vAx +
@@ -1059,7 +1069,7 @@ export class JointTree implements TreeSolve {
         jB[m + 3] * vBx +
         jB[m + 4] * vBy +
         jB[m + 5] * wB +
-        Math.max(-limit[e + 1], Math.min(biasRate * err[e + 1], limit[e + 1]))
+        pointRows.boundedBias(biasRate, err[e + 1], limit[e + 1])
       );
       x[o + 2] = -(
         jA[m + 6] * vAx +
@@ -1068,7 +1078,7 @@ export class JointTree implements TreeSolve {
         jB[m + 6] * vBx +
         jB[m + 7] * vBy +
         jB[m + 8] * wB +
-        Math.max(-limit[e + 2], Math.min(biasRate * err[e + 2], limit[e + 2]))
+        pointRows.boundedBias(biasRate, err[e + 2], limit[e + 2])
       );
     }
     this.substitute();
@@ -1111,10 +1121,11 @@ export class JointTree implements TreeSolve {
       }
       const dim = this.nodeDim[n];
       if (dim > 3) {
-        for (let k = 0; k < dim; k++) scratch[k] = x[xn + k];
+        const values = this.#nodeValues;
+        for (let k = 0; k < dim; k++) values[k] = x[xn + k];
         for (let r = 0; r < dim; r++) {
           let s = 0;
-          for (let k = 0; k < dim; k++) s += dInv[o + Block.ROWS * r + k] * scratch[k];
+          for (let k = 0; k < dim; k++) s += dInv[o + Block.ROWS * r + k] * values[k];
           x[xn + r] = s;
         }
         continue;
@@ -1165,17 +1176,15 @@ function eligible(
   return true;
 }
 
-const scratch = new Float64Array(Block.ROWS);
-const work = new Float64Array(Block.SIZE);
-
 /**
  * Inverts the symmetric dim × dim block at `o` (stride Block.ROWS) of `m` into `out`: in closed form up to
  * 3 rows, zeroing the rest of the 3 × 3 block, else (a root with its grounded joint's rows) by
  * Gauss-Jordan elimination in natural order. No pivoting is needed here: a block is either positive
  * definite (a body), negative definite (a joint) or a body's positive definite rows followed by its
  * grounded joint's rows, whose Schur complement is negative definite. A zero pivot gives a zero row.
+ * `work` holds the block under elimination (Block.SIZE doubles).
  */
-function invertBlock(m: Float64Array, out: Float64Array, o: number, dim: number): void {
+function invertBlock(m: Float64Array, out: Float64Array, o: number, dim: number, work: Float64Array): void {
   if (dim === 1) {
     invert1(m, out, o);
     return;

@@ -20,10 +20,11 @@ import { CollideContext } from '../narrow-phase/collide-context';
 import { ContactConstraints } from '../solver/contact-solver';
 import { FineIslands } from '../solver/fine-islands';
 import { GraphColoring } from '../solver/graph-color';
-import { HingeBatch } from '../solver/hinge-batch';
+import { Anchor, H, HingeBatch } from '../solver/hinge-batch';
 import { Islands } from '../solver/island';
 import type { JointContext } from '../solver/joint-context';
 import { JointTree } from '../solver/joint-tree';
+import { PointRows } from '../solver/point-rows';
 import type { Softness } from '../solver/softness';
 import type { SolverJoint } from '../solver/solver-joint';
 import { BodyFlag, BodyKind, BodyStore } from '../store/body-store';
@@ -66,6 +67,15 @@ class ScratchManifoldPoint implements ManifoldPoint {
  * @internal
  */
 export class WorkingMemory {
+  /**
+   * A joint's step data as Joint.prepareBase works it out: a hinge record (H layout, see HingeBatch),
+   * its anchors (Anchor layout) and its bodies' slots.
+   */
+  readonly jointRecord = new Float64Array(H.STRIDE);
+  readonly jointAnchors = new Float64Array(Anchor.STRIDE);
+  readonly jointIds = new Int32Array(2);
+  /** The joints' point rows' maths (an object holding no state: see PointRows). */
+  readonly pointRows = new PointRows();
   /** The narrow phase's manifold. */
   readonly manifold: Manifold = {
     normalX: 0,

@@ -107,7 +107,7 @@ function importsOf(fileName: string, text: string): { specifier: string; typeOnl
   for (const statement of source.statements) {
     if (ts.isImportDeclaration(statement) && ts.isStringLiteral(statement.moduleSpecifier)) {
       const clause = statement.importClause;
-      let typeOnly = clause !== undefined && clause.isTypeOnly;
+      let typeOnly = clause?.isTypeOnly === true;
       if (
         clause &&
         !typeOnly &&
