@@ -19,7 +19,7 @@ export function proxyKeyId(key: number): number {
   return key >> 2;
 }
 
-/** @internal Receives each proxy a ray reaches; see `BroadPhase.rayCast`. */
+/** Receives each proxy a ray reaches; see `BroadPhase.rayCast`. */
 export interface BroadPhaseRayCastVisitor {
   /** Returns -1 to ignore the proxy, 0 to stop, or a fraction in (0, maxFraction) to clip the ray. */
   rayCastProxy(proxyKey: number, shapeId: number, maxFraction: number): number;

@@ -42,7 +42,7 @@ abstract class ShapeRayVisitor implements BroadPhaseRayCastVisitor {
   }
 }
 
-/** Keeps the closest hit and clips the ray to it. */
+/** @internal Keeps the closest hit and clips the ray to it. */
 export class ClosestVisitor extends ShapeRayVisitor {
   slot = -1;
   fraction = 0;
@@ -68,7 +68,7 @@ export class ClosestVisitor extends ShapeRayVisitor {
   }
 }
 
-/** Records every hit without clipping: per hit, slot and five numbers. */
+/** @internal Records every hit without clipping: per hit, slot and five numbers. */
 export class AllVisitor extends ShapeRayVisitor {
   count = 0;
   slots = new Int32Array(16);
