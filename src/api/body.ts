@@ -13,7 +13,7 @@ import type { Concave, Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
 import { makeRotInto, rotAngle } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
-import { BodyFlag, BodyKind, S } from '../store/body-store';
+import { BodyFlag, BodyKind, BodyState } from '../store/body-store';
 import type { WorldCore } from '../world/world-core';
 import { changeBodyKind, replaceShapeGeometry, sleepIsland } from '../world/world-edits';
 import type { WorldHandles } from './handles';
@@ -151,13 +151,13 @@ export class Body {
   }
 
   get linearVelocity(): Vec2 {
-    const s = this.check() * S.STRIDE;
+    const s = this.check() * BodyState.STRIDE;
     const state = this.core.bodies.state;
-    return { x: state[s + S.VX], y: state[s + S.VY] };
+    return { x: state[s + BodyState.VX], y: state[s + BodyState.VY] };
   }
 
   get angularVelocity(): number {
-    return this.core.bodies.state[this.check() * S.STRIDE + S.W];
+    return this.core.bodies.state[this.check() * BodyState.STRIDE + BodyState.W];
   }
 
   get mass(): number {
@@ -289,9 +289,9 @@ export class Body {
     const v = checkVector('velocity', velocity, Limits.RATE);
     const core = this.core;
     if (core.bodies.kind[b] === BodyKind.STATIC) return;
-    const s = b * S.STRIDE;
-    core.bodies.state[s + S.VX] = v.x;
-    core.bodies.state[s + S.VY] = v.y;
+    const s = b * BodyState.STRIDE;
+    core.bodies.state[s + BodyState.VX] = v.x;
+    core.bodies.state[s + BodyState.VY] = v.y;
     this.wakeWithNeighbours(b);
   }
 
@@ -302,7 +302,7 @@ export class Body {
     if (core.bodies.kind[b] === BodyKind.STATIC) return;
     if ((core.bodies.flags[b] & BodyFlag.FIXED_ROTATION) !== 0 && core.bodies.kind[b] === BodyKind.DYNAMIC)
       return;
-    core.bodies.state[b * S.STRIDE + S.W] = w;
+    core.bodies.state[b * BodyState.STRIDE + BodyState.W] = w;
     this.wakeWithNeighbours(b);
   }
 
@@ -335,7 +335,7 @@ export class Body {
     const core = this.core;
     if (fixed) core.bodies.flags[b] |= BodyFlag.FIXED_ROTATION;
     else core.bodies.flags[b] &= ~BodyFlag.FIXED_ROTATION;
-    if (fixed) core.bodies.state[b * S.STRIDE + S.W] = 0;
+    if (fixed) core.bodies.state[b * BodyState.STRIDE + BodyState.W] = 0;
     core.updateMass(b);
     core.wake(b);
   }
@@ -403,10 +403,11 @@ export class Body {
     const bodies = core.bodies;
     const p = point === undefined ? { x: bodies.cx[b], y: bodies.cy[b] } : checkCoordinates('point', point);
     if (bodies.kind[b] !== BodyKind.DYNAMIC) return;
-    const s = b * S.STRIDE;
-    bodies.state[s + S.VX] += bodies.invMass[b] * i.x;
-    bodies.state[s + S.VY] += bodies.invMass[b] * i.y;
-    bodies.state[s + S.W] += bodies.invInertia[b] * ((p.x - bodies.cx[b]) * i.y - (p.y - bodies.cy[b]) * i.x);
+    const s = b * BodyState.STRIDE;
+    bodies.state[s + BodyState.VX] += bodies.invMass[b] * i.x;
+    bodies.state[s + BodyState.VY] += bodies.invMass[b] * i.y;
+    bodies.state[s + BodyState.W] +=
+      bodies.invInertia[b] * ((p.x - bodies.cx[b]) * i.y - (p.y - bodies.cy[b]) * i.x);
     core.wake(b);
   }
 
@@ -415,7 +416,7 @@ export class Body {
     const i = checkForce('impulse', impulse);
     const core = this.core;
     if (core.bodies.kind[b] !== BodyKind.DYNAMIC) return;
-    core.bodies.state[b * S.STRIDE + S.W] += core.bodies.invInertia[b] * i;
+    core.bodies.state[b * BodyState.STRIDE + BodyState.W] += core.bodies.invInertia[b] * i;
     core.wake(b);
   }
 
@@ -462,11 +463,11 @@ export class Body {
     const b = this.check();
     const p = checkCoordinates('worldPoint', worldPoint);
     const bodies = this.core.bodies;
-    const s = b * S.STRIDE;
-    const w = bodies.state[s + S.W];
+    const s = b * BodyState.STRIDE;
+    const w = bodies.state[s + BodyState.W];
     return {
-      x: bodies.state[s + S.VX] - w * (p.y - bodies.cy[b]),
-      y: bodies.state[s + S.VY] + w * (p.x - bodies.cx[b]),
+      x: bodies.state[s + BodyState.VX] - w * (p.y - bodies.cy[b]),
+      y: bodies.state[s + BodyState.VY] + w * (p.x - bodies.cx[b]),
     };
   }
 

@@ -1,4 +1,4 @@
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import type { World } from './world';
 
 /**
@@ -28,7 +28,7 @@ export function stateHash(world: World): number {
     mix(bodies.py[b]);
     mix(bodies.qc[b]);
     mix(bodies.qs[b]);
-    const s = b * S.STRIDE;
+    const s = b * BodyState.STRIDE;
     mix(bodies.state[s]);
     mix(bodies.state[s + 1]);
     mix(bodies.state[s + 2]);

@@ -26,7 +26,7 @@ import { makeRotInto } from '../math/rot';
 import type { Rot, Vec2 } from '../math/vec2';
 import type { CastHit, QueryFilter, QueryTransform } from '../query/index';
 import * as queries from '../query/index';
-import { BodyFlag, BodyKind, S } from '../store/body-store';
+import { BodyFlag, BodyKind, BodyState } from '../store/body-store';
 import { stepWorld } from '../world/step';
 import { WorldCore } from '../world/world-core';
 import { sleepIsland } from '../world/world-edits';
@@ -224,10 +224,10 @@ export class World {
     bodies.qc[b] = rot.c;
     bodies.qs[b] = rot.s;
     if (kind !== BodyKind.STATIC) {
-      const s = b * S.STRIDE;
-      bodies.state[s + S.VX] = v.x;
-      bodies.state[s + S.VY] = v.y;
-      bodies.state[s + S.W] = fixedRotation && kind === BodyKind.DYNAMIC ? 0 : w;
+      const s = b * BodyState.STRIDE;
+      bodies.state[s + BodyState.VX] = v.x;
+      bodies.state[s + BodyState.VY] = v.y;
+      bodies.state[s + BodyState.W] = fixedRotation && kind === BodyKind.DYNAMIC ? 0 : w;
     }
     bodies.linearDamping[b] = linearDamping;
     bodies.angularDamping[b] = angularDamping;

@@ -6,7 +6,7 @@ import type { Vec2 } from '../math/vec2';
 import type { JointContext } from '../solver/joint-context';
 import { CLOSURE_REGULARIZATION } from '../solver/joint-tree';
 import { makeSoftness, type Softness, springImpulse } from '../solver/softness';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import { Joint } from './joint';
 import {
   BASE_KEYS,
@@ -223,24 +223,24 @@ export class DistanceJoint extends Joint {
   private apply(state: Float64Array, impulse: number): void {
     const px = impulse * this.ux;
     const py = impulse * this.uy;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
-    state[sa + S.VX] -= this.mA * px;
-    state[sa + S.VY] -= this.mA * py;
-    state[sa + S.W] -= this.iA * (this.rAx * py - this.rAy * px);
-    state[sb + S.VX] += this.mB * px;
-    state[sb + S.VY] += this.mB * py;
-    state[sb + S.W] += this.iB * (this.rBx * py - this.rBy * px);
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
+    state[sa + BodyState.VX] -= this.mA * px;
+    state[sa + BodyState.VY] -= this.mA * py;
+    state[sa + BodyState.W] -= this.iA * (this.rAx * py - this.rAy * px);
+    state[sb + BodyState.VX] += this.mB * px;
+    state[sb + BodyState.VY] += this.mB * py;
+    state[sb + BodyState.W] += this.iB * (this.rBx * py - this.rBy * px);
   }
 
   /** Relative velocity of the anchors along the axis. */
   private axialSpeed(state: Float64Array): number {
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
-    const wA = state[sa + S.W];
-    const wB = state[sb + S.W];
-    const dvx = state[sb + S.VX] - wB * this.rBy - state[sa + S.VX] + wA * this.rAy;
-    const dvy = state[sb + S.VY] + wB * this.rBx - state[sa + S.VY] - wA * this.rAx;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
+    const wA = state[sa + BodyState.W];
+    const wB = state[sb + BodyState.W];
+    const dvx = state[sb + BodyState.VX] - wB * this.rBy - state[sa + BodyState.VX] + wA * this.rAy;
+    const dvy = state[sb + BodyState.VY] + wB * this.rBx - state[sa + BodyState.VY] - wA * this.rAx;
     return dvx * this.ux + dvy * this.uy;
   }
 

@@ -2,10 +2,10 @@ import type { Body } from '../api/body';
 import type { World } from '../api/world';
 import { FulcrumError } from '../core/errors';
 import type { Vec2 } from '../math/vec2';
-import { Anchor, H, writeStepData } from '../solver/hinge-batch';
+import { Anchor, HingeField, writeStepData } from '../solver/hinge-batch';
 import type { JointContext } from '../solver/joint-context';
 import { relativeAngle } from '../solver/joint-math';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import type { WorldCore } from '../world/world-core';
 import type { JointType } from './registry';
 
@@ -156,16 +156,16 @@ export abstract class Joint {
     const work = this.core.work;
     const d = work.jointRecord;
     this.writeBase(ctx, d, work.jointIds, work.jointAnchors, 0);
-    this.mA = d[H.MA];
-    this.iA = d[H.IA];
-    this.mB = d[H.MB];
-    this.iB = d[H.IB];
-    this.rAx0 = d[H.RAX0];
-    this.rAy0 = d[H.RAY0];
-    this.rBx0 = d[H.RBX0];
-    this.rBy0 = d[H.RBY0];
-    this.dcx = d[H.DCX];
-    this.dcy = d[H.DCY];
+    this.mA = d[HingeField.MA];
+    this.iA = d[HingeField.IA];
+    this.mB = d[HingeField.MB];
+    this.iB = d[HingeField.IB];
+    this.rAx0 = d[HingeField.RAX0];
+    this.rAy0 = d[HingeField.RAY0];
+    this.rBx0 = d[HingeField.RBX0];
+    this.rBy0 = d[HingeField.RBY0];
+    this.dcx = d[HingeField.DCX];
+    this.dcy = d[HingeField.DCY];
     this.rAx = this.rAx0;
     this.rAy = this.rAy0;
     this.rBx = this.rBx0;
@@ -175,7 +175,7 @@ export abstract class Joint {
   /**
    * Sets the bodies' slots and the step's 1/h, and writes the step's body data and anchors as the
    * hinge batch's record `i`: the slots to `ids`, the local anchors to `anchors`, the step data
-   * (H.MA .. H.M22) to `d`.
+   * (HingeField.MA .. HingeField.M22) to `d`.
    */
   private writeBase(
     ctx: JointContext,
@@ -207,18 +207,18 @@ export abstract class Joint {
    * a grid of welds took 1.06x the instructions a step (1.27x with the weld's rows through them too).
    */
   protected updateAnchors(state: Float64Array): void {
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
-    let c = state[sa + S.DQC];
-    let s = state[sa + S.DQS];
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
+    let c = state[sa + BodyState.DQC];
+    let s = state[sa + BodyState.DQS];
     this.rAx = c * this.rAx0 - s * this.rAy0;
     this.rAy = s * this.rAx0 + c * this.rAy0;
-    c = state[sb + S.DQC];
-    s = state[sb + S.DQS];
+    c = state[sb + BodyState.DQC];
+    s = state[sb + BodyState.DQS];
     this.rBx = c * this.rBx0 - s * this.rBy0;
     this.rBy = s * this.rBx0 + c * this.rBy0;
-    this.sepX = state[sb + S.DPX] - state[sa + S.DPX] + this.dcx + this.rBx - this.rAx;
-    this.sepY = state[sb + S.DPY] - state[sa + S.DPY] + this.dcy + this.rBy - this.rAy;
+    this.sepX = state[sb + BodyState.DPX] - state[sa + BodyState.DPX] + this.dcx + this.rBx - this.rAx;
+    this.sepY = state[sb + BodyState.DPY] - state[sa + BodyState.DPY] + this.dcy + this.rBy - this.rAy;
   }
 
   /**
@@ -372,10 +372,16 @@ export abstract class Joint {
     jB[m] = 0;
     jB[m + 1] = 0;
     jB[m + 2] = 1;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
     err[3 * j + row] =
-      angle0 + relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
+      angle0 +
+      relativeAngle(
+        state[sa + BodyState.DQC],
+        state[sa + BodyState.DQS],
+        state[sb + BodyState.DQC],
+        state[sb + BodyState.DQS],
+      );
   }
 
   /** @internal Writes the two point rows (anchor B minus anchor A) of tree joint `j`; anchors must be current. */
@@ -448,36 +454,36 @@ export abstract class Joint {
    */
   warmStartGuarded(ctx: JointContext): void {
     const state = ctx.state;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
-    const vAx = state[sa + S.VX];
-    const vAy = state[sa + S.VY];
-    const wA = state[sa + S.W];
-    const vBx = state[sb + S.VX];
-    const vBy = state[sb + S.VY];
-    const wB = state[sb + S.W];
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
+    const vAx = state[sa + BodyState.VX];
+    const vAy = state[sa + BodyState.VY];
+    const wA = state[sa + BodyState.W];
+    const vBx = state[sb + BodyState.VX];
+    const vBy = state[sb + BodyState.VY];
+    const wB = state[sb + BodyState.W];
     this.warmStart(ctx);
     const v2 = ctx.warmSpeedLimit * ctx.warmSpeedLimit;
     const w = ctx.warmTurnLimit;
-    const nAx = state[sa + S.VX];
-    const nAy = state[sa + S.VY];
-    const nBx = state[sb + S.VX];
-    const nBy = state[sb + S.VY];
+    const nAx = state[sa + BodyState.VX];
+    const nAy = state[sa + BodyState.VY];
+    const nBx = state[sb + BodyState.VX];
+    const nBy = state[sb + BodyState.VY];
     // written so that NaN fails the test too
     if (
       nAx * nAx + nAy * nAy <= v2 &&
       nBx * nBx + nBy * nBy <= v2 &&
-      Math.abs(state[sa + S.W]) <= w &&
-      Math.abs(state[sb + S.W]) <= w
+      Math.abs(state[sa + BodyState.W]) <= w &&
+      Math.abs(state[sb + BodyState.W]) <= w
     ) {
       return;
     }
-    state[sa + S.VX] = vAx;
-    state[sa + S.VY] = vAy;
-    state[sa + S.W] = wA;
-    state[sb + S.VX] = vBx;
-    state[sb + S.VY] = vBy;
-    state[sb + S.W] = wB;
+    state[sa + BodyState.VX] = vAx;
+    state[sa + BodyState.VY] = vAy;
+    state[sa + BodyState.W] = wA;
+    state[sb + BodyState.VX] = vBx;
+    state[sb + BodyState.VY] = vBy;
+    state[sb + BodyState.W] = wB;
     this.forgetImpulses();
   }
   /** @internal */

@@ -4,7 +4,7 @@ import { checkAngle, checkCoordinates, checkNonNegativeForce } from '../core/lim
 import type { Vec2 } from '../math/vec2';
 import type { JointContext } from '../solver/joint-context';
 import { relativeAngle, unwindAngle } from '../solver/joint-math';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import { Joint } from './joint';
 import {
   BASE_KEYS,
@@ -131,43 +131,48 @@ export class MotorJoint extends Joint {
   /** @internal */
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
-    state[sa + S.VX] -= this.mA * this.linearX;
-    state[sa + S.VY] -= this.mA * this.linearY;
-    state[sa + S.W] -= this.iA * this.angularImpulse;
-    state[sb + S.VX] += this.mB * this.linearX;
-    state[sb + S.VY] += this.mB * this.linearY;
-    state[sb + S.W] += this.iB * this.angularImpulse;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
+    state[sa + BodyState.VX] -= this.mA * this.linearX;
+    state[sa + BodyState.VY] -= this.mA * this.linearY;
+    state[sa + BodyState.W] -= this.iA * this.angularImpulse;
+    state[sb + BodyState.VX] += this.mB * this.linearX;
+    state[sb + BodyState.VY] += this.mB * this.linearY;
+    state[sb + BodyState.W] += this.iB * this.angularImpulse;
   }
 
   /** @internal */
   solve(ctx: JointContext, _useBias: boolean): void {
     const state = ctx.state;
     const o = this.o;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
     const correction = o.correctionFactor * ctx.invH;
     const k = this.iA + this.iB;
     if (k > 0) {
       const C =
         this.angle0 +
-        relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
+        relativeAngle(
+          state[sa + BodyState.DQC],
+          state[sa + BodyState.DQS],
+          state[sb + BodyState.DQC],
+          state[sb + BodyState.DQS],
+        );
       const max = o.maxTorque * ctx.h;
       const old = this.angularImpulse;
-      const cdot = state[sb + S.W] - state[sa + S.W] + correction * C;
+      const cdot = state[sb + BodyState.W] - state[sa + BodyState.W] + correction * C;
       this.angularImpulse = Math.max(-max, Math.min(old - cdot / k, max));
       const impulse = this.angularImpulse - old;
-      state[sa + S.W] -= this.iA * impulse;
-      state[sb + S.W] += this.iB * impulse;
+      state[sa + BodyState.W] -= this.iA * impulse;
+      state[sb + BodyState.W] += this.iB * impulse;
     }
     const m = this.mA + this.mB;
     if (m > 0) {
       this.updateAnchors(state);
       const cx = this.sepX - this.offsetX;
       const cy = this.sepY - this.offsetY;
-      const cdotX = state[sb + S.VX] - state[sa + S.VX] + correction * cx;
-      const cdotY = state[sb + S.VY] - state[sa + S.VY] + correction * cy;
+      const cdotX = state[sb + BodyState.VX] - state[sa + BodyState.VX] + correction * cx;
+      const cdotY = state[sb + BodyState.VY] - state[sa + BodyState.VY] + correction * cy;
       const oldX = this.linearX;
       const oldY = this.linearY;
       let ix = oldX - cdotX / m;
@@ -181,10 +186,10 @@ export class MotorJoint extends Joint {
       }
       this.linearX = ix;
       this.linearY = iy;
-      state[sa + S.VX] -= this.mA * (ix - oldX);
-      state[sa + S.VY] -= this.mA * (iy - oldY);
-      state[sb + S.VX] += this.mB * (ix - oldX);
-      state[sb + S.VY] += this.mB * (iy - oldY);
+      state[sa + BodyState.VX] -= this.mA * (ix - oldX);
+      state[sa + BodyState.VY] -= this.mA * (iy - oldY);
+      state[sb + BodyState.VX] += this.mB * (ix - oldX);
+      state[sb + BodyState.VY] += this.mB * (iy - oldY);
     }
   }
 }

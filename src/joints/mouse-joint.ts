@@ -4,7 +4,7 @@ import { checkCoordinates, checkHertz, checkNonNegativeForce, checkNonNegativeRa
 import type { Vec2 } from '../math/vec2';
 import type { JointContext } from '../solver/joint-context';
 import { makeSoftness, type Softness } from '../solver/softness';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import { Joint } from './joint';
 import { type JointKind, optionalNumber } from './joint-def';
 
@@ -97,10 +97,10 @@ export class MouseJoint extends Joint {
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.updateAnchors(state);
-    const sb = this.b * S.STRIDE;
-    state[sb + S.VX] += this.mB * this.impulseX;
-    state[sb + S.VY] += this.mB * this.impulseY;
-    state[sb + S.W] += this.iB * (this.rBx * this.impulseY - this.rBy * this.impulseX);
+    const sb = this.b * BodyState.STRIDE;
+    state[sb + BodyState.VX] += this.mB * this.impulseX;
+    state[sb + BodyState.VY] += this.mB * this.impulseY;
+    state[sb + BodyState.W] += this.iB * (this.rBx * this.impulseY - this.rBy * this.impulseX);
   }
 
   /** @internal */
@@ -108,17 +108,17 @@ export class MouseJoint extends Joint {
     const rows = this.core.work.pointRows;
     const state = ctx.state;
     this.updateAnchors(state);
-    const sb = this.b * S.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
     const mB = this.mB;
     const iB = this.iB;
     const rBx = this.rBx;
     const rBy = this.rBy;
-    let vx = state[sb + S.VX];
-    let vy = state[sb + S.VY];
-    let w = state[sb + S.W];
+    let vx = state[sb + BodyState.VX];
+    let vy = state[sb + BodyState.VY];
+    let w = state[sb + BodyState.W];
     // the spring acts in both passes: it is a soft force, not an error to be relaxed away
-    const cx = this.cBx + state[sb + S.DPX] + rBx - this.o.targetX;
-    const cy = this.cBy + state[sb + S.DPY] + rBy - this.o.targetY;
+    const cx = this.cBx + state[sb + BodyState.DPX] + rBx - this.o.targetX;
+    const cy = this.cBy + state[sb + BodyState.DPY] + rBy - this.o.targetY;
     const cdotX = vx - w * rBy;
     const cdotY = vy + w * rBx;
     const k11 = mB + rBy * rBy * iB;
@@ -145,9 +145,9 @@ export class MouseJoint extends Joint {
     vx += mB * px;
     vy += mB * py;
     w += iB * (rBx * py - rBy * px);
-    state[sb + S.VX] = vx;
-    state[sb + S.VY] = vy;
-    state[sb + S.W] = w;
+    state[sb + BodyState.VX] = vx;
+    state[sb + BodyState.VY] = vy;
+    state[sb + BodyState.W] = w;
   }
 }
 

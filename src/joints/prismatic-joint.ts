@@ -6,7 +6,7 @@ import type { Vec2 } from '../math/vec2';
 import { motorImpulse } from '../solver/axial-rows';
 import type { JointContext } from '../solver/joint-context';
 import { relativeAngle, unwindAngle } from '../solver/joint-math';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import {
   ANCHOR_KEYS,
   type AnchorDef,
@@ -176,8 +176,8 @@ export class PrismaticJoint extends SliderJoint {
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.warmStartSlider(state);
-    state[this.a * S.STRIDE + S.W] -= this.iA * this.angularImpulse;
-    state[this.b * S.STRIDE + S.W] += this.iB * this.angularImpulse;
+    state[this.a * BodyState.STRIDE + BodyState.W] -= this.iA * this.angularImpulse;
+    state[this.b * BodyState.STRIDE + BodyState.W] += this.iB * this.angularImpulse;
   }
 
   /** @internal */
@@ -187,25 +187,31 @@ export class PrismaticJoint extends SliderJoint {
     // no rotation relative to A
     const k = this.iA + this.iB;
     if (k > 0 && !this.inTree) {
-      const sa = this.a * S.STRIDE;
-      const sb = this.b * S.STRIDE;
+      const sa = this.a * BodyState.STRIDE;
+      const sb = this.b * BodyState.STRIDE;
       let bias = 0;
       let massScale = 1;
       let impulseScale = 0;
       if (useBias) {
         const C =
           this.angle0 +
-          relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
+          relativeAngle(
+            state[sa + BodyState.DQC],
+            state[sa + BodyState.DQS],
+            state[sb + BodyState.DQC],
+            state[sb + BodyState.DQS],
+          );
         const soft = ctx.jointSoftness;
         bias = Math.max(-ctx.jointPushMaxTurn, Math.min(soft.biasRate * C, ctx.jointPushMaxTurn));
         massScale = soft.massScale;
         impulseScale = soft.impulseScale;
       }
       const impulse =
-        (-massScale * (state[sb + S.W] - state[sa + S.W] + bias)) / k - impulseScale * this.angularImpulse;
+        (-massScale * (state[sb + BodyState.W] - state[sa + BodyState.W] + bias)) / k -
+        impulseScale * this.angularImpulse;
       this.angularImpulse += impulse;
-      state[sa + S.W] -= this.iA * impulse;
-      state[sb + S.W] += this.iB * impulse;
+      state[sa + BodyState.W] -= this.iA * impulse;
+      state[sb + BodyState.W] += this.iB * impulse;
     }
   }
 }

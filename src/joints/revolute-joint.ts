@@ -10,12 +10,12 @@ import {
 } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import { limitImpulse, motorImpulse } from '../solver/axial-rows';
-import { H } from '../solver/hinge-batch';
+import { HingeField } from '../solver/hinge-batch';
 import type { JointContext } from '../solver/joint-context';
 import { relativeAngle, unwindAngle } from '../solver/joint-math';
 import { CLOSURE_REGULARIZATION } from '../solver/joint-tree';
 import { makeSoftness, type Softness, springImpulse } from '../solver/softness';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import { Joint } from './joint';
 import {
   ANCHOR_KEYS,
@@ -162,8 +162,11 @@ export class RevoluteJoint extends Joint {
     if (this.batchIndex >= 0) {
       // the hinge batch keeps the impulse until the hinge leaves it (see HingeBatch)
       const batch = this.core.hingeBatch;
-      const base = this.batchIndex * H.STRIDE;
-      return { x: batch.data[base + H.LX] * batch.invH, y: batch.data[base + H.LY] * batch.invH };
+      const base = this.batchIndex * HingeField.STRIDE;
+      return {
+        x: batch.data[base + HingeField.LX] * batch.invH,
+        y: batch.data[base + HingeField.LY] * batch.invH,
+      };
     }
     return { x: this.linearX * this.invH, y: this.linearY * this.invH };
   }
@@ -255,21 +258,21 @@ export class RevoluteJoint extends Joint {
     i: number,
   ): void {
     super.packHinge(ctx, data, ids, anchors, i);
-    const base = i * H.STRIDE;
+    const base = i * HingeField.STRIDE;
     // as prepare does for disabled rows
     this.springImpulse = 0;
     this.motorImpulse = 0;
     this.lowerImpulse = 0;
     this.upperImpulse = 0;
-    data[base + H.LX] = this.linearX;
-    data[base + H.LY] = this.linearY;
+    data[base + HingeField.LX] = this.linearX;
+    data[base + HingeField.LY] = this.linearY;
     this.batchIndex = i;
   }
 
   /** @internal */
   override unpackHinge(data: Float64Array, base: number, invH: number): void {
-    this.linearX = data[base + H.LX];
-    this.linearY = data[base + H.LY];
+    this.linearX = data[base + HingeField.LX];
+    this.linearY = data[base + HingeField.LY];
     this.invH = invH;
     this.batchIndex = -1;
   }
@@ -309,8 +312,8 @@ export class RevoluteJoint extends Joint {
     this.updateAnchors(state);
     this.core.work.pointRows.applyTurnImpulse(
       state,
-      this.a * S.STRIDE,
-      this.b * S.STRIDE,
+      this.a * BodyState.STRIDE,
+      this.b * BodyState.STRIDE,
       this.mA,
       this.iA,
       this.mB,
@@ -327,16 +330,22 @@ export class RevoluteJoint extends Joint {
 
   /** Current joint angle from the angle at the step's start and the rotations since. */
   private currentAngle(state: Float64Array): number {
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
     return (
-      this.angle0 + relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS])
+      this.angle0 +
+      relativeAngle(
+        state[sa + BodyState.DQC],
+        state[sa + BodyState.DQS],
+        state[sb + BodyState.DQC],
+        state[sb + BodyState.DQS],
+      )
     );
   }
 
   /** B's angular velocity relative to A's. */
   private relativeTurn(state: Float64Array): number {
-    return state[this.b * S.STRIDE + S.W] - state[this.a * S.STRIDE + S.W];
+    return state[this.b * BodyState.STRIDE + BodyState.W] - state[this.a * BodyState.STRIDE + BodyState.W];
   }
 
   /** @internal spring, motor and limits, in that order, on B's turn relative to A (see Joint) */
@@ -393,13 +402,13 @@ export class RevoluteJoint extends Joint {
   /** @internal */
   solve(ctx: JointContext, useBias: boolean): void {
     const state = ctx.state;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
     // the axial rows here unless the tree solves them (TreeAxials)
     if (this.axialEntry0 < 0 && this.axialRows() !== 0) {
       const impulse = this.solveAxial(ctx, 0, this.relativeTurn(state), this.axialMass, useBias);
-      state[sa + S.W] -= this.iA * impulse;
-      state[sb + S.W] += this.iB * impulse;
+      state[sa + BodyState.W] -= this.iA * impulse;
+      state[sb + BodyState.W] += this.iB * impulse;
     }
     // point-to-point, unless the tree solver owns it
     if (!this.inTree) this.solvePoint(ctx, useBias);
@@ -414,8 +423,8 @@ export class RevoluteJoint extends Joint {
   private solvePoint(ctx: JointContext, useBias: boolean): void {
     const rows = this.core.work.pointRows;
     const state = ctx.state;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
     const mA = this.mA;
     const iA = this.iA;
     const mB = this.mB;
@@ -425,10 +434,10 @@ export class RevoluteJoint extends Joint {
     const rAy = this.rAy;
     const rBx = this.rBx;
     const rBy = this.rBy;
-    const wA = state[sa + S.W];
-    const wB = state[sb + S.W];
-    const cdotX = rows.speedX(state[sa + S.VX], wA, rAy, state[sb + S.VX], wB, rBy);
-    const cdotY = rows.speedY(state[sa + S.VY], wA, rAx, state[sb + S.VY], wB, rBx);
+    const wA = state[sa + BodyState.W];
+    const wB = state[sb + BodyState.W];
+    const cdotX = rows.speedX(state[sa + BodyState.VX], wA, rAy, state[sb + BodyState.VX], wB, rBy);
+    const cdotY = rows.speedY(state[sa + BodyState.VY], wA, rAx, state[sb + BodyState.VY], wB, rBx);
     let biasX = 0;
     let biasY = 0;
     let massScale = 1;

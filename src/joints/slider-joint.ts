@@ -6,7 +6,7 @@ import type { Vec2 } from '../math/vec2';
 import { limitImpulse } from '../solver/axial-rows';
 import type { JointContext } from '../solver/joint-context';
 import { makeSoftness, type Softness, springImpulse } from '../solver/softness';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import { Joint } from './joint';
 import { checkOrder, optionalBoolean, optionalNumber, unitAxis } from './joint-def';
 
@@ -177,9 +177,9 @@ export abstract class SliderJoint extends Joint {
   /** @internal Current axis (turned with A), translation and the axial effective mass. */
   protected updateAxis(state: Float64Array): void {
     this.updateAnchors(state);
-    const sa = this.a * S.STRIDE;
-    const c = state[sa + S.DQC];
-    const s = state[sa + S.DQS];
+    const sa = this.a * BodyState.STRIDE;
+    const c = state[sa + BodyState.DQC];
+    const s = state[sa + BodyState.DQS];
     this.ux = c * this.axis0x - s * this.axis0y;
     this.uy = s * this.axis0x + c * this.axis0y;
     const dx = this.sepX + this.rAx;
@@ -193,26 +193,26 @@ export abstract class SliderJoint extends Joint {
 
   /** @internal */
   protected axialSpeed(state: Float64Array): number {
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
     return (
-      (state[sb + S.VX] - state[sa + S.VX]) * this.ux +
-      (state[sb + S.VY] - state[sa + S.VY]) * this.uy +
-      this.a2 * state[sb + S.W] -
-      this.a1 * state[sa + S.W]
+      (state[sb + BodyState.VX] - state[sa + BodyState.VX]) * this.ux +
+      (state[sb + BodyState.VY] - state[sa + BodyState.VY]) * this.uy +
+      this.a2 * state[sb + BodyState.W] -
+      this.a1 * state[sa + BodyState.W]
     );
   }
 
   /** @internal */
   protected applyAxial(state: Float64Array, impulse: number): void {
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
-    state[sa + S.VX] -= this.mA * impulse * this.ux;
-    state[sa + S.VY] -= this.mA * impulse * this.uy;
-    state[sa + S.W] -= this.iA * impulse * this.a1;
-    state[sb + S.VX] += this.mB * impulse * this.ux;
-    state[sb + S.VY] += this.mB * impulse * this.uy;
-    state[sb + S.W] += this.iB * impulse * this.a2;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
+    state[sa + BodyState.VX] -= this.mA * impulse * this.ux;
+    state[sa + BodyState.VY] -= this.mA * impulse * this.uy;
+    state[sa + BodyState.W] -= this.iA * impulse * this.a1;
+    state[sb + BodyState.VX] += this.mB * impulse * this.ux;
+    state[sb + BodyState.VY] += this.mB * impulse * this.uy;
+    state[sb + BodyState.W] += this.iB * impulse * this.a2;
   }
 
   /** @internal The tree's entry of the axis row (see Joint.axialEntry0), -1 when it is not weighed there. */
@@ -226,14 +226,14 @@ export abstract class SliderJoint extends Joint {
     const dy = this.sepY + this.rAy;
     const s1 = dx * py - dy * px;
     const s2 = this.rBx * py - this.rBy * px;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
-    state[sa + S.VX] -= this.mA * impulse * px;
-    state[sa + S.VY] -= this.mA * impulse * py;
-    state[sa + S.W] -= this.iA * impulse * s1;
-    state[sb + S.VX] += this.mB * impulse * px;
-    state[sb + S.VY] += this.mB * impulse * py;
-    state[sb + S.W] += this.iB * impulse * s2;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
+    state[sa + BodyState.VX] -= this.mA * impulse * px;
+    state[sa + BodyState.VY] -= this.mA * impulse * py;
+    state[sa + BodyState.W] -= this.iA * impulse * s1;
+    state[sb + BodyState.VX] += this.mB * impulse * px;
+    state[sb + BodyState.VY] += this.mB * impulse * py;
+    state[sb + BodyState.W] += this.iB * impulse * s2;
   }
 
   /** @internal the rows along the axis (spring, limits, and the subclass's motor) */
@@ -425,13 +425,13 @@ export abstract class SliderJoint extends Joint {
     const s2 = this.rBx * py - this.rBy * px;
     const k = this.mA + this.mB + this.iA * s1 * s1 + this.iB * s2 * s2;
     if (k > 0) {
-      const sa = this.a * S.STRIDE;
-      const sb = this.b * S.STRIDE;
+      const sa = this.a * BodyState.STRIDE;
+      const sb = this.b * BodyState.STRIDE;
       const cdot =
-        (state[sb + S.VX] - state[sa + S.VX]) * px +
-        (state[sb + S.VY] - state[sa + S.VY]) * py +
-        s2 * state[sb + S.W] -
-        s1 * state[sa + S.W];
+        (state[sb + BodyState.VX] - state[sa + BodyState.VX]) * px +
+        (state[sb + BodyState.VY] - state[sa + BodyState.VY]) * py +
+        s2 * state[sb + BodyState.W] -
+        s1 * state[sa + BodyState.W];
       let bias = 0;
       let massScale = 1;
       let impulseScale = 0;

@@ -5,7 +5,7 @@ import type { Vec2 } from '../math/vec2';
 import type { JointContext } from '../solver/joint-context';
 import { relativeAngle, solveSymmetric33, unwindAngle } from '../solver/joint-math';
 import { makeSoftness, type Softness, springInvMass } from '../solver/softness';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import { Joint } from './joint';
 import {
   ANCHOR_KEYS,
@@ -144,16 +144,16 @@ export class WeldJoint extends Joint {
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.updateAnchors(state);
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
     const px = this.linearX;
     const py = this.linearY;
-    state[sa + S.VX] -= this.mA * px;
-    state[sa + S.VY] -= this.mA * py;
-    state[sa + S.W] -= this.iA * (this.rAx * py - this.rAy * px + this.angularImpulse);
-    state[sb + S.VX] += this.mB * px;
-    state[sb + S.VY] += this.mB * py;
-    state[sb + S.W] += this.iB * (this.rBx * py - this.rBy * px + this.angularImpulse);
+    state[sa + BodyState.VX] -= this.mA * px;
+    state[sa + BodyState.VY] -= this.mA * py;
+    state[sa + BodyState.W] -= this.iA * (this.rAx * py - this.rAy * px + this.angularImpulse);
+    state[sb + BodyState.VX] += this.mB * px;
+    state[sb + BodyState.VY] += this.mB * py;
+    state[sb + BodyState.W] += this.iB * (this.rBx * py - this.rBy * px + this.angularImpulse);
   }
 
   /**
@@ -174,18 +174,18 @@ export class WeldJoint extends Joint {
   solve(ctx: JointContext, useBias: boolean): void {
     if (this.inTree) return;
     const state = ctx.state;
-    const sa = this.a * S.STRIDE;
-    const sb = this.b * S.STRIDE;
+    const sa = this.a * BodyState.STRIDE;
+    const sb = this.b * BodyState.STRIDE;
     const mA = this.mA;
     const iA = this.iA;
     const mB = this.mB;
     const iB = this.iB;
-    const vAx = state[sa + S.VX];
-    const vAy = state[sa + S.VY];
-    const wA = state[sa + S.W];
-    const vBx = state[sb + S.VX];
-    const vBy = state[sb + S.VY];
-    const wB = state[sb + S.W];
+    const vAx = state[sa + BodyState.VX];
+    const vAy = state[sa + BodyState.VY];
+    const wA = state[sa + BodyState.W];
+    const vBx = state[sb + BodyState.VX];
+    const vBy = state[sb + BodyState.VY];
+    const wB = state[sb + BodyState.W];
     this.updateAnchors(state);
     const rAx = this.rAx;
     const rAy = this.rAy;
@@ -217,7 +217,12 @@ export class WeldJoint extends Joint {
       const soft = this.angularSoft;
       const C =
         this.angle0 +
-        relativeAngle(state[sa + S.DQC], state[sa + S.DQS], state[sb + S.DQC], state[sb + S.DQS]);
+        relativeAngle(
+          state[sa + BodyState.DQC],
+          state[sa + BodyState.DQS],
+          state[sb + BodyState.DQC],
+          state[sb + BodyState.DQS],
+        );
       biasW = soft.biasRate * C;
       if (this.o.angularHertz === 0) {
         biasW = Math.max(-ctx.jointPushMaxTurn, Math.min(biasW, ctx.jointPushMaxTurn));
@@ -261,12 +266,12 @@ export class WeldJoint extends Joint {
     this.linearX = lx + px;
     this.linearY = ly + py;
     this.angularImpulse = lw + pw;
-    state[sa + S.VX] = vAx - mA * px;
-    state[sa + S.VY] = vAy - mA * py;
-    state[sa + S.W] = wA - iA * (rAx * py - rAy * px + pw);
-    state[sb + S.VX] = vBx + mB * px;
-    state[sb + S.VY] = vBy + mB * py;
-    state[sb + S.W] = wB + iB * (rBx * py - rBy * px + pw);
+    state[sa + BodyState.VX] = vAx - mA * px;
+    state[sa + BodyState.VY] = vAy - mA * py;
+    state[sa + BodyState.W] = wA - iA * (rAx * py - rAy * px + pw);
+    state[sb + BodyState.VX] = vBx + mB * px;
+    state[sb + BodyState.VY] = vBy + mB * py;
+    state[sb + BodyState.W] = wB + iB * (rBx * py - rBy * px + pw);
   }
 }
 

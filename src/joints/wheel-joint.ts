@@ -5,7 +5,7 @@ import { checkNonNegativeForce, checkRate } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import { motorImpulse } from '../solver/axial-rows';
 import type { JointContext } from '../solver/joint-context';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import {
   ANCHOR_KEYS,
   type AnchorDef,
@@ -173,8 +173,8 @@ export class WheelJoint extends SliderJoint {
   warmStart(ctx: JointContext): void {
     const state = ctx.state;
     this.warmStartSlider(state);
-    state[this.a * S.STRIDE + S.W] -= this.iA * this.motorImpulse;
-    state[this.b * S.STRIDE + S.W] += this.iB * this.motorImpulse;
+    state[this.a * BodyState.STRIDE + BodyState.W] -= this.iA * this.motorImpulse;
+    state[this.b * BodyState.STRIDE + BodyState.W] += this.iB * this.motorImpulse;
   }
 
   /** @internal */
@@ -183,11 +183,17 @@ export class WheelJoint extends SliderJoint {
     const k = this.iA + this.iB;
     // the motor here unless the tree solves it (TreeAxials)
     if (this.o.enableMotor && k > 0 && this.axialEntry0 < 0) {
-      const sa = this.a * S.STRIDE;
-      const sb = this.b * S.STRIDE;
-      const impulse = this.solveAxial(ctx, 0, state[sb + S.W] - state[sa + S.W], 1 / k, useBias);
-      state[sa + S.W] -= this.iA * impulse;
-      state[sb + S.W] += this.iB * impulse;
+      const sa = this.a * BodyState.STRIDE;
+      const sb = this.b * BodyState.STRIDE;
+      const impulse = this.solveAxial(
+        ctx,
+        0,
+        state[sb + BodyState.W] - state[sa + BodyState.W],
+        1 / k,
+        useBias,
+      );
+      state[sa + BodyState.W] -= this.iA * impulse;
+      state[sb + BodyState.W] += this.iB * impulse;
     }
     this.solveSlider(ctx, useBias);
   }

@@ -18,7 +18,7 @@ const SINGLE_POINT_ID = 2;
  * A point for writePoint, in A's frame (CollideContext.candidate): a point (x, y) on B's core, the
  * normal n from A to B, B's core separation along n and the two radii.
  */
-enum K {
+enum CandidatePoint {
   X = 0,
   Y = 1,
   NX = 2,
@@ -30,13 +30,13 @@ enum K {
 
 /** Writes manifold point `index` from `candidate`, with feature id `id`. */
 function writePoint(candidate: Float64Array, xfA: Transform, out: Manifold, index: number, id: number): void {
-  const coreSeparation = candidate[K.CORE_SEPARATION];
-  const rA = candidate[K.RA];
-  const rB = candidate[K.RB];
+  const coreSeparation = candidate[CandidatePoint.CORE_SEPARATION];
+  const rA = candidate[CandidatePoint.RA];
+  const rB = candidate[CandidatePoint.RB];
   // halfway between A's surface (x - (s - rA) n) and B's surface (x - rB n)
   const shift = 0.5 * (rA - rB - coreSeparation);
-  const mx = candidate[K.X] + shift * candidate[K.NX];
-  const my = candidate[K.Y] + shift * candidate[K.NY];
+  const mx = candidate[CandidatePoint.X] + shift * candidate[CandidatePoint.NX];
+  const my = candidate[CandidatePoint.Y] + shift * candidate[CandidatePoint.NY];
   const { c, s } = xfA.q;
   const point = out.points[index];
   point.x = c * mx - s * my + xfA.p.x;
@@ -75,8 +75,8 @@ export function collideRoundedSegmentPair(
   const b2x = data[b + Pack.VERTEX_STRIDE];
   const b2y = data[b + Pack.VERTEX_STRIDE + 1];
   const rB = data[baseB + Pack.RADIUS];
-  candidate[K.RA] = rA;
-  candidate[K.RB] = rB;
+  candidate[CandidatePoint.RA] = rA;
+  candidate[CandidatePoint.RB] = rB;
   const speculativeDistance = context.reach;
   out.pointCount = 0;
   const qa = xfA.q;
@@ -148,11 +148,11 @@ export function collideRoundedSegmentPair(
       }
       const coreSeparation = (x - a1x) * sx + (y - a1y) * sy;
       if (coreSeparation - radius < speculativeDistance) {
-        candidate[K.X] = x;
-        candidate[K.Y] = y;
-        candidate[K.NX] = sx;
-        candidate[K.NY] = sy;
-        candidate[K.CORE_SEPARATION] = coreSeparation;
+        candidate[CandidatePoint.X] = x;
+        candidate[CandidatePoint.Y] = y;
+        candidate[CandidatePoint.NX] = sx;
+        candidate[CandidatePoint.NY] = sy;
+        candidate[CandidatePoint.CORE_SEPARATION] = coreSeparation;
         writePoint(candidate, xfA, out, out.pointCount, k);
         out.pointCount += 1;
       }
@@ -167,11 +167,11 @@ export function collideRoundedSegmentPair(
   }
   const coreSeparation = (closest.qx - closest.px) * sx + (closest.qy - closest.py) * sy;
   if (!(coreSeparation - radius < speculativeDistance)) return;
-  candidate[K.X] = closest.qx;
-  candidate[K.Y] = closest.qy;
-  candidate[K.NX] = sx;
-  candidate[K.NY] = sy;
-  candidate[K.CORE_SEPARATION] = coreSeparation;
+  candidate[CandidatePoint.X] = closest.qx;
+  candidate[CandidatePoint.Y] = closest.qy;
+  candidate[CandidatePoint.NX] = sx;
+  candidate[CandidatePoint.NY] = sy;
+  candidate[CandidatePoint.CORE_SEPARATION] = coreSeparation;
   writePoint(candidate, xfA, out, 0, SINGLE_POINT_ID);
   out.pointCount = 1;
 }

@@ -171,7 +171,7 @@ function maxSeparation(p: WorkPolygon, q: WorkPolygon, out: Float64Array): numbe
  * the normal from the reference to the incident shape, and per point the point on the incident core,
  * its core separation and id.
  */
-enum L {
+enum LocalManifold {
   NX = 0,
   NY = 1,
   POINTS = 2,
@@ -252,24 +252,24 @@ function collideLoaded(context: CollideContext): number {
   }
   const inc2 = inc1 + 1 === inc.count ? 0 : inc1 + 1;
   const faces = context.faces;
-  faces[F.NX] = nx;
-  faces[F.NY] = ny;
-  faces[F.V1X] = v1x;
-  faces[F.V1Y] = v1y;
-  faces[F.V2X] = v2x;
-  faces[F.V2Y] = v2y;
-  faces[F.W1X] = inc.x[inc1];
-  faces[F.W1Y] = inc.y[inc1];
-  faces[F.W2X] = inc.x[inc2];
-  faces[F.W2Y] = inc.y[inc2];
-  faces[F.SEPARATION] = separation;
-  faces[F.R_REF] = rRef;
-  faces[F.R_INC] = rInc;
+  faces[FaceInput.NX] = nx;
+  faces[FaceInput.NY] = ny;
+  faces[FaceInput.V1X] = v1x;
+  faces[FaceInput.V1Y] = v1y;
+  faces[FaceInput.V2X] = v2x;
+  faces[FaceInput.V2Y] = v2y;
+  faces[FaceInput.W1X] = inc.x[inc1];
+  faces[FaceInput.W1Y] = inc.y[inc1];
+  faces[FaceInput.W2X] = inc.x[inc2];
+  faces[FaceInput.W2Y] = inc.y[inc2];
+  faces[FaceInput.SEPARATION] = separation;
+  faces[FaceInput.R_REF] = rRef;
+  faces[FaceInput.R_INC] = rInc;
   return contactFromFaces(context, owner, refEdge, ref2, inc1, inc2);
 }
 
 /** The inputs of contactFromFaces, in A's frame (CollideContext.faces). */
-enum F {
+enum FaceInput {
   NX = 0,
   NY = 1,
   V1X = 2,
@@ -302,22 +302,22 @@ function contactFromFaces(
   const faces = context.faces;
   const local = context.local;
   const localIds = context.localIds;
-  const nx = faces[F.NX];
-  const ny = faces[F.NY];
-  const v1x = faces[F.V1X];
-  const v1y = faces[F.V1Y];
-  const v2x = faces[F.V2X];
-  const v2y = faces[F.V2Y];
-  const w1x = faces[F.W1X];
-  const w1y = faces[F.W1Y];
-  const w2x = faces[F.W2X];
-  const w2y = faces[F.W2Y];
-  const separation = faces[F.SEPARATION];
-  const rRef = faces[F.R_REF];
-  const rInc = faces[F.R_INC];
+  const nx = faces[FaceInput.NX];
+  const ny = faces[FaceInput.NY];
+  const v1x = faces[FaceInput.V1X];
+  const v1y = faces[FaceInput.V1Y];
+  const v2x = faces[FaceInput.V2X];
+  const v2y = faces[FaceInput.V2Y];
+  const w1x = faces[FaceInput.W1X];
+  const w1y = faces[FaceInput.W1Y];
+  const w2x = faces[FaceInput.W2X];
+  const w2y = faces[FaceInput.W2Y];
+  const separation = faces[FaceInput.SEPARATION];
+  const rRef = faces[FaceInput.R_REF];
+  const rInc = faces[FaceInput.R_INC];
   const speculativeDistance = context.reach;
-  local[L.NX] = nx;
-  local[L.NY] = ny;
+  local[LocalManifold.NX] = nx;
+  local[LocalManifold.NY] = ny;
   if (separation > VERTEX_PAIR_MIN_GAP) {
     // cores apart: when the edges' true distance exceeds the face separation, two vertices are closest
     const segmentPair = context.segments;
@@ -340,11 +340,11 @@ function contactFromFaces(
       const refVertex = closest.s < 0.5 ? refEdge : ref2;
       const incVertex = closest.t < 0.5 ? inc1 : inc2;
       // the points are written in place: doubles passed to a helper V8 does not inline are boxed
-      local[L.NX] = ux;
-      local[L.NY] = uy;
-      local[L.POINTS] = closest.qx;
-      local[L.POINTS + 1] = closest.qy;
-      local[L.POINTS + 2] = distance;
+      local[LocalManifold.NX] = ux;
+      local[LocalManifold.NY] = uy;
+      local[LocalManifold.POINTS] = closest.qx;
+      local[LocalManifold.POINTS + 1] = closest.qy;
+      local[LocalManifold.POINTS + 2] = distance;
       localIds[0] = IdBit.VERTEX_PAIR | owner | (refVertex << 4) | incVertex;
       return 1;
     }
@@ -364,9 +364,9 @@ function contactFromFaces(
     const first = s1 <= s2;
     const s = first ? s1 : s2;
     if (!(s - rRef - rInc < speculativeDistance)) return 0;
-    local[L.POINTS] = first ? w1x : w2x;
-    local[L.POINTS + 1] = first ? w1y : w2y;
-    local[L.POINTS + 2] = s;
+    local[LocalManifold.POINTS] = first ? w1x : w2x;
+    local[LocalManifold.POINTS + 1] = first ? w1y : w2y;
+    local[LocalManifold.POINTS + 2] = s;
     localIds[0] = idBase | (first ? inc1 : inc2);
     return 1;
   }
@@ -383,7 +383,7 @@ function contactFromFaces(
     }
     const s = (x - v1x) * nx + (y - v1y) * ny;
     if (s - rRef - rInc < speculativeDistance) {
-      const at = L.POINTS + 3 * count;
+      const at = LocalManifold.POINTS + 3 * count;
       local[at] = x;
       local[at + 1] = y;
       local[at + 2] = s;
@@ -567,19 +567,19 @@ function collideRectangles(
     w2y = rs * x2 + rc * y2 + ry;
   }
   const faces = context.faces;
-  faces[F.NX] = nx;
-  faces[F.NY] = ny;
-  faces[F.V1X] = v1x;
-  faces[F.V1Y] = v1y;
-  faces[F.V2X] = v2x;
-  faces[F.V2Y] = v2y;
-  faces[F.W1X] = w1x;
-  faces[F.W1Y] = w1y;
-  faces[F.W2X] = w2x;
-  faces[F.W2Y] = w2y;
-  faces[F.SEPARATION] = flip ? separationB : separationA;
-  faces[F.R_REF] = flip ? radiusB : radiusA;
-  faces[F.R_INC] = flip ? radiusA : radiusB;
+  faces[FaceInput.NX] = nx;
+  faces[FaceInput.NY] = ny;
+  faces[FaceInput.V1X] = v1x;
+  faces[FaceInput.V1Y] = v1y;
+  faces[FaceInput.V2X] = v2x;
+  faces[FaceInput.V2Y] = v2y;
+  faces[FaceInput.W1X] = w1x;
+  faces[FaceInput.W1Y] = w1y;
+  faces[FaceInput.W2X] = w2x;
+  faces[FaceInput.W2Y] = w2y;
+  faces[FaceInput.SEPARATION] = flip ? separationB : separationA;
+  faces[FaceInput.R_REF] = flip ? radiusB : radiusA;
+  faces[FaceInput.R_INC] = flip ? radiusA : radiusB;
   return contactFromFaces(context, flip ? IdBit.B_REFERENCE : 0, refEdge, ref2, inc1, inc2);
 }
 
@@ -602,8 +602,8 @@ function writeManifold(
   const px = xf.p.x;
   const py = xf.p.y;
   const local = context.local;
-  const nx = local[L.NX];
-  const ny = local[L.NY];
+  const nx = local[LocalManifold.NX];
+  const ny = local[LocalManifold.NY];
   const flip = context.referenceFlip;
   const sign = flip ? -1 : 1;
   out.normalX = sign * (c * nx - s * ny);
@@ -611,7 +611,7 @@ function writeManifold(
   const rRef = flip ? radiusB : radiusA;
   const rInc = flip ? radiusA : radiusB;
   for (let i = 0; i < count; i++) {
-    const k = L.POINTS + 3 * i;
+    const k = LocalManifold.POINTS + 3 * i;
     const coreSeparation = local[k + 2];
     // halfway between the reference surface (x - (s - rRef) n) and the incident surface (x - rInc n)
     const shift = 0.5 * (rRef - rInc - coreSeparation);

@@ -10,7 +10,7 @@ import type { World } from '../api/world';
 import { ShapeKind } from '../geometry/types';
 import type { MouseJoint } from '../joints/mouse-joint';
 import type { Transform, Vec2 } from '../math/vec2';
-import { BodyFlag, BodyKind, S } from '../store/body-store';
+import { BodyFlag, BodyKind, BodyState } from '../store/body-store';
 import { ContactFlag } from '../store/contact-store';
 import { ShapeFlag } from '../store/shape-store';
 
@@ -300,9 +300,9 @@ function drawVelocitiesAndCenters(
     center.q.s = xf.q.s;
     if (flags.centersOfMass) draw.drawTransform(center);
     if (flags.velocities) {
-      const st = b * S.STRIDE;
-      const vx = bodies.state[st + S.VX];
-      const vy = bodies.state[st + S.VY];
+      const st = b * BodyState.STRIDE;
+      const vx = bodies.state[st + BodyState.VX];
+      const vy = bodies.state[st + BodyState.VY];
       // a tenth of a second of travel
       tip.x = center.p.x + vx * 0.1;
       tip.y = center.p.y + vy * 0.1;

@@ -1,28 +1,28 @@
 import { IndexBound } from '../core/index-bound';
 import { MAX_ROTATION_PER_SUBSTEP } from '../core/settings';
-import { BodyKind, type BodyStore, S } from '../store/body-store';
+import { BodyKind, BodyState, type BodyStore } from '../store/body-store';
 
 /**
  * Clamps the velocity of the body at state offset `s` to `maxSpeed` and `maxW`; an infinite or NaN
  * velocity becomes zero. Written so that NaN fails the comparisons and takes the clamp.
  */
 export function clampVelocity(state: Float64Array, s: number, maxSpeed: number, maxW: number): void {
-  const vx = state[s + S.VX];
-  const vy = state[s + S.VY];
-  const w = state[s + S.W];
+  const vx = state[s + BodyState.VX];
+  const vy = state[s + BodyState.VY];
+  const w = state[s + BodyState.W];
   const v2 = vx * vx + vy * vy;
   if (!(v2 <= maxSpeed * maxSpeed)) {
     // finite: scaled onto the limit; infinite or NaN: stopped
     const finite = v2 < Number.POSITIVE_INFINITY;
     const scale = finite ? maxSpeed / Math.sqrt(v2) : 0;
-    state[s + S.VX] = finite ? scale * vx : 0;
-    state[s + S.VY] = finite ? scale * vy : 0;
+    state[s + BodyState.VX] = finite ? scale * vx : 0;
+    state[s + BodyState.VY] = finite ? scale * vy : 0;
   }
-  if (!(w <= maxW && w >= -maxW)) state[s + S.W] = w > maxW ? maxW : w < -maxW ? -maxW : 0;
+  if (!(w <= maxW && w >= -maxW)) state[s + BodyState.W] = w > maxW ? maxW : w < -maxW ? -maxW : 0;
 }
 
 /** Layout of one awake body's step-constant velocity update (see prepareVelocityUpdate). */
-export enum V {
+export enum VelocityUpdate {
   /** h times the acceleration from gravity and the applied force */
   DVX = 0,
   DVY = 1,
@@ -63,14 +63,14 @@ export function prepareVelocityUpdate(
   for (let i = 0, n = awakeCount & IndexBound.MAX; i < n; i++) {
     const b = awake[i] & IndexBound.MAX;
     if (kind[b] !== BodyKind.DYNAMIC) continue;
-    const o = i * V.STRIDE;
+    const o = i * VelocityUpdate.STRIDE;
     const m = invMass[b];
     const g = gravityScale[b];
-    out[o + V.DVX] = h * (g * gx + m * fx[b]);
-    out[o + V.DVY] = h * (g * gy + m * fy[b]);
-    out[o + V.DW] = h * invInertia[b] * torque[b];
-    out[o + V.LINEAR] = 1 / (1 + h * linearDamping[b]);
-    out[o + V.ANGULAR] = 1 + h * angularDamping[b];
+    out[o + VelocityUpdate.DVX] = h * (g * gx + m * fx[b]);
+    out[o + VelocityUpdate.DVY] = h * (g * gy + m * fy[b]);
+    out[o + VelocityUpdate.DW] = h * invInertia[b] * torque[b];
+    out[o + VelocityUpdate.LINEAR] = 1 / (1 + h * linearDamping[b]);
+    out[o + VelocityUpdate.ANGULAR] = 1 + h * angularDamping[b];
   }
 }
 
@@ -94,12 +94,13 @@ export function integrateVelocities(
   for (let i = 0, n = awakeCount & IndexBound.MAX; i < n; i++) {
     const b = awake[i] & IndexBound.MAX;
     if (kind[b] !== BodyKind.DYNAMIC) continue;
-    const s = b * S.STRIDE;
-    const o = i * V.STRIDE;
-    const linearFactor = update[o + V.LINEAR];
-    state[s + S.VX] = (state[s + S.VX] + update[o + V.DVX]) * linearFactor;
-    state[s + S.VY] = (state[s + S.VY] + update[o + V.DVY]) * linearFactor;
-    state[s + S.W] = (state[s + S.W] + update[o + V.DW]) / update[o + V.ANGULAR];
+    const s = b * BodyState.STRIDE;
+    const o = i * VelocityUpdate.STRIDE;
+    const linearFactor = update[o + VelocityUpdate.LINEAR];
+    state[s + BodyState.VX] = (state[s + BodyState.VX] + update[o + VelocityUpdate.DVX]) * linearFactor;
+    state[s + BodyState.VY] = (state[s + BodyState.VY] + update[o + VelocityUpdate.DVY]) * linearFactor;
+    state[s + BodyState.W] =
+      (state[s + BodyState.W] + update[o + VelocityUpdate.DW]) / update[o + VelocityUpdate.ANGULAR];
     clampVelocity(state, s, maxLinearSpeed, maxW);
   }
 }
@@ -126,13 +127,13 @@ export function integratePositions(
   const maxW = MAX_ROTATION_PER_SUBSTEP / h;
   for (let i = 0, n = awakeCount & IndexBound.MAX; i < n; i++) {
     const b = awake[i] & IndexBound.MAX;
-    const s = b * S.STRIDE;
+    const s = b * BodyState.STRIDE;
     clampVelocity(state, s, maxLinearSpeed, maxW);
-    const vx = state[s + S.VX];
-    const vy = state[s + S.VY];
-    const w = state[s + S.W];
-    state[s + S.DPX] += h * vx;
-    state[s + S.DPY] += h * vy;
+    const vx = state[s + BodyState.VX];
+    const vy = state[s + BodyState.VY];
+    const w = state[s + BodyState.W];
+    state[s + BodyState.DPX] += h * vx;
+    state[s + BodyState.DPY] += h * vy;
     // rotate by the angle h w: its cosine and sine from their Taylor series, exact to ~2e-8 at the
     // clamp (|h w| <= pi / 4) and to rounding at everyday speeds, so the pair's length stays within
     // ~1e-7 of 1 until the last substep renormalises it (a square root and a division per body and
@@ -141,12 +142,12 @@ export function integratePositions(
     const x2 = x * x;
     const rc = 1 - x2 * (0.5 - x2 * (1 / 24 - x2 * (1 / 720 - x2 / 40320)));
     const rs = x * (1 - x2 * (1 / 6 - x2 * (1 / 120 - x2 * (1 / 5040 - x2 / 362880))));
-    const c = state[s + S.DQC];
-    const sn = state[s + S.DQS];
+    const c = state[s + BodyState.DQC];
+    const sn = state[s + BodyState.DQS];
     const nc = c * rc - sn * rs;
     const ns = sn * rc + c * rs;
     const inv = last ? 1 / Math.sqrt(nc * nc + ns * ns) : 1;
-    state[s + S.DQC] = nc * inv;
-    state[s + S.DQS] = ns * inv;
+    state[s + BodyState.DQC] = nc * inv;
+    state[s + BodyState.DQS] = ns * inv;
   }
 }

@@ -1,7 +1,7 @@
 import { growF64, growI32 } from '../core/grow';
 import { IndexBound } from '../core/index-bound';
 import type { BodyStore } from '../store/body-store';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import type { ContactStore } from '../store/contact-store';
 import type { ShapeStore } from '../store/shape-store';
 import { LoadPaths, UNSUPPORTED } from './load-paths';
@@ -10,7 +10,7 @@ import type { Softness } from './softness';
 // Layout of one contact constraint in `ContactConstraints.data` (doubles). Kept small: the solver
 // streams it eight times a step, and a large pile's constraints do not fit in the cache. Enums, not
 // consts, for the reason given in body-store.ts.
-enum C {
+enum ContactField {
   NX = 0,
   NY = 1,
   FRICTION = 2,
@@ -34,7 +34,7 @@ enum C {
 // tangent t = (ny, -nx), the solver needs the anchors only through their cross products with n and t:
 // the relative normal velocity is (vB - vA) . n + wB (rB x n) - wA (rA x n), and an impulse P turns a
 // body by its inverse inertia times r x P.
-enum P {
+enum PointField {
   /** rA x n */
   RNA = 0,
   /** rB x n */
@@ -61,11 +61,11 @@ enum P {
   NIMP = 9,
   TIMP = 10,
   MAX_NIMP = 11,
-  /** C.STRIDE counts two of these */
+  /** ContactField.STRIDE counts two of these */
   STRIDE = 12,
 }
 // Layout of `ContactConstraints.restitution`: read only after the substeps.
-enum R {
+enum RestitutionField {
   RESTITUTION = 0,
   /** normal relative velocity of each point before the step (negative when approaching) */
   REL_VEL = 1,
@@ -129,8 +129,8 @@ export class ContactConstraints {
     if (n <= this.capacity) return;
     let capacity = Math.max(64, this.capacity);
     while (capacity < n) capacity *= 2;
-    this.data = growF64(this.data, capacity * C.STRIDE);
-    this.restitution = growF64(this.restitution, capacity * R.STRIDE);
+    this.data = growF64(this.data, capacity * ContactField.STRIDE);
+    this.restitution = growF64(this.restitution, capacity * RestitutionField.STRIDE);
     this.ids = growI32(this.ids, capacity * 3);
     // rewritten every step: nothing to keep
     this.lower = new Int8Array(capacity);
@@ -256,34 +256,34 @@ export function prepareContacts(
     const radiusA = radius[sA];
     const radiusB = radius[sB];
     const pointCount = contacts.pointCount[c];
-    const base = i * C.STRIDE;
-    const rBase = i * R.STRIDE;
+    const base = i * ContactField.STRIDE;
+    const rBase = i * RestitutionField.STRIDE;
     cc.ids[i * 3] = a;
     cc.ids[i * 3 + 1] = b;
     cc.ids[i * 3 + 2] = c;
-    d[base + C.NX] = nx;
-    d[base + C.NY] = ny;
-    d[base + C.FRICTION] = Math.sqrt(friction[sA] * friction[sB]);
-    d[base + C.MA] = mA;
-    d[base + C.IA] = iA;
-    d[base + C.MB] = mB;
-    d[base + C.IB] = iB;
-    d[base + C.COUNT] = pointCount;
-    d[base + C.SOFTNESS] = anchored ? ANCHORED_SOFTNESS : 0;
-    rd[rBase + R.RESTITUTION] = Math.max(restitution[sA], restitution[sB]);
-    const sa = a * S.STRIDE;
-    const sb = b * S.STRIDE;
-    const vAx = state[sa + S.VX];
-    const vAy = state[sa + S.VY];
-    const wA = state[sa + S.W];
-    const vBx = state[sb + S.VX];
-    const vBy = state[sb + S.VY];
-    const wB = state[sb + S.W];
+    d[base + ContactField.NX] = nx;
+    d[base + ContactField.NY] = ny;
+    d[base + ContactField.FRICTION] = Math.sqrt(friction[sA] * friction[sB]);
+    d[base + ContactField.MA] = mA;
+    d[base + ContactField.IA] = iA;
+    d[base + ContactField.MB] = mB;
+    d[base + ContactField.IB] = iB;
+    d[base + ContactField.COUNT] = pointCount;
+    d[base + ContactField.SOFTNESS] = anchored ? ANCHORED_SOFTNESS : 0;
+    rd[rBase + RestitutionField.RESTITUTION] = Math.max(restitution[sA], restitution[sB]);
+    const sa = a * BodyState.STRIDE;
+    const sb = b * BodyState.STRIDE;
+    const vAx = state[sa + BodyState.VX];
+    const vAy = state[sa + BodyState.VY];
+    const wA = state[sa + BodyState.W];
+    const vBx = state[sb + BodyState.VX];
+    const vBy = state[sb + BodyState.VY];
+    const wB = state[sb + BodyState.W];
     const tx = ny;
     const ty = -nx;
     for (let j = 0; j < pointCount; j++) {
       const k = c * 2 + j;
-      const p = base + C.POINTS + j * P.STRIDE;
+      const p = base + ContactField.POINTS + j * PointField.STRIDE;
       const rAx = pointX[k] - cAx;
       const rAy = pointY[k] - cAy;
       const rBx = pointX[k] - cBx;
@@ -292,45 +292,45 @@ export function prepareContacts(
       const rnB = rBx * ny - rBy * nx;
       const rtA = rAx * ty - rAy * tx;
       const rtB = rBx * ty - rBy * tx;
-      d[p + P.RNA] = rnA;
-      d[p + P.RNB] = rnB;
-      d[p + P.RTA] = rtA;
-      d[p + P.RTB] = rtB;
+      d[p + PointField.RNA] = rnA;
+      d[p + PointField.RNB] = rnB;
+      d[p + PointField.RTA] = rtA;
+      d[p + PointField.RTB] = rtB;
       // the surfaces are separation/2 either side of the point; the cores a radius further in
       const sep = separation[k];
       const backA = radiusA + 0.5 * sep;
       const backB = radiusB + 0.5 * sep;
-      d[p + P.QA] = backA + rtA;
-      d[p + P.QB] = backB - rtB;
-      d[p + P.ADJ_SEP] = sep - ((rBx - rAx) * nx + (rBy - rAy) * ny + backA + backB);
+      d[p + PointField.QA] = backA + rtA;
+      d[p + PointField.QB] = backB - rtB;
+      d[p + PointField.ADJ_SEP] = sep - ((rBx - rAx) * nx + (rBy - rAy) * ny + backA + backB);
       const kN = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-      d[p + P.NMASS] = kN > 0 ? 1 / kN : 0;
+      d[p + PointField.NMASS] = kN > 0 ? 1 / kN : 0;
       const kT = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
-      d[p + P.TMASS] = kT > 0 ? 1 / kT : 0;
-      d[p + P.NIMP] = normalImpulse[k];
-      d[p + P.TIMP] = tangentImpulse[k];
-      d[p + P.MAX_NIMP] = 0;
+      d[p + PointField.TMASS] = kT > 0 ? 1 / kT : 0;
+      d[p + PointField.NIMP] = normalImpulse[k];
+      d[p + PointField.TIMP] = tangentImpulse[k];
+      d[p + PointField.MAX_NIMP] = 0;
       const dvx = vBx - wB * rBy - vAx + wA * rAy;
       const dvy = vBy + wB * rBx - vAy - wA * rAx;
-      rd[rBase + R.REL_VEL + j] = dvx * nx + dvy * ny;
+      rd[rBase + RestitutionField.REL_VEL + j] = dvx * nx + dvy * ny;
     }
-    d[base + C.BLOCK] = 0;
+    d[base + ContactField.BLOCK] = 0;
     if (pointCount === 2) {
-      const p1 = base + C.POINTS;
-      const p2 = p1 + P.STRIDE;
-      const rn1A = d[p1 + P.RNA];
-      const rn1B = d[p1 + P.RNB];
-      const rn2A = d[p2 + P.RNA];
-      const rn2B = d[p2 + P.RNB];
+      const p1 = base + ContactField.POINTS;
+      const p2 = p1 + PointField.STRIDE;
+      const rn1A = d[p1 + PointField.RNA];
+      const rn1B = d[p1 + PointField.RNB];
+      const rn2A = d[p2 + PointField.RNA];
+      const rn2B = d[p2 + PointField.RNB];
       const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
       const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
       const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
       const det = k11 * k22 - k12 * k12;
       if (k11 * k11 < MAX_CONDITION * det) {
-        d[base + C.K11] = k11;
-        d[base + C.K12] = k12;
-        d[base + C.K22] = k22;
-        d[base + C.BLOCK] = 1;
+        d[base + ContactField.K11] = k11;
+        d[base + ContactField.K12] = k12;
+        d[base + ContactField.K22] = k22;
+        d[base + ContactField.BLOCK] = 1;
       }
     }
   }
@@ -341,52 +341,52 @@ export function warmStartContacts(cc: ContactConstraints, state: Float64Array): 
   const d = cc.data;
   const ids = cc.ids;
   for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
-    const base = i * C.STRIDE;
-    const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
-    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
-    const mA = d[base + C.MA];
-    const iA = d[base + C.IA];
-    const mB = d[base + C.MB];
-    const iB = d[base + C.IB];
-    const nx = d[base + C.NX];
-    const ny = d[base + C.NY];
-    let vAx = state[sa + S.VX];
-    let vAy = state[sa + S.VY];
-    let wA = state[sa + S.W];
-    let vBx = state[sb + S.VX];
-    let vBy = state[sb + S.VY];
-    let wB = state[sb + S.W];
+    const base = i * ContactField.STRIDE;
+    const sa = (ids[i * 3] & IndexBound.MAX) * BodyState.STRIDE;
+    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * BodyState.STRIDE;
+    const mA = d[base + ContactField.MA];
+    const iA = d[base + ContactField.IA];
+    const mB = d[base + ContactField.MB];
+    const iB = d[base + ContactField.IB];
+    const nx = d[base + ContactField.NX];
+    const ny = d[base + ContactField.NY];
+    let vAx = state[sa + BodyState.VX];
+    let vAy = state[sa + BodyState.VY];
+    let wA = state[sa + BodyState.W];
+    let vBx = state[sb + BodyState.VX];
+    let vBy = state[sb + BodyState.VY];
+    let wB = state[sb + BodyState.W];
     // P = ni * n + ti * t, with t = (ny, -nx); the second point (if any) unrolled, as in solveContacts
-    let p = base + C.POINTS;
-    let ni = d[p + P.NIMP];
-    let ti = d[p + P.TIMP];
+    let p = base + ContactField.POINTS;
+    let ni = d[p + PointField.NIMP];
+    let ti = d[p + PointField.TIMP];
     let Px = ni * nx + ti * ny;
     let Py = ni * ny - ti * nx;
-    wA -= iA * (ni * d[p + P.RNA] + ti * d[p + P.RTA]);
+    wA -= iA * (ni * d[p + PointField.RNA] + ti * d[p + PointField.RTA]);
     vAx -= mA * Px;
     vAy -= mA * Py;
-    wB += iB * (ni * d[p + P.RNB] + ti * d[p + P.RTB]);
+    wB += iB * (ni * d[p + PointField.RNB] + ti * d[p + PointField.RTB]);
     vBx += mB * Px;
     vBy += mB * Py;
-    if (d[base + C.COUNT] === 2) {
-      p += P.STRIDE;
-      ni = d[p + P.NIMP];
-      ti = d[p + P.TIMP];
+    if (d[base + ContactField.COUNT] === 2) {
+      p += PointField.STRIDE;
+      ni = d[p + PointField.NIMP];
+      ti = d[p + PointField.TIMP];
       Px = ni * nx + ti * ny;
       Py = ni * ny - ti * nx;
-      wA -= iA * (ni * d[p + P.RNA] + ti * d[p + P.RTA]);
+      wA -= iA * (ni * d[p + PointField.RNA] + ti * d[p + PointField.RTA]);
       vAx -= mA * Px;
       vAy -= mA * Py;
-      wB += iB * (ni * d[p + P.RNB] + ti * d[p + P.RTB]);
+      wB += iB * (ni * d[p + PointField.RNB] + ti * d[p + PointField.RTB]);
       vBx += mB * Px;
       vBy += mB * Py;
     }
-    state[sa + S.VX] = vAx;
-    state[sa + S.VY] = vAy;
-    state[sa + S.W] = wA;
-    state[sb + S.VX] = vBx;
-    state[sb + S.VY] = vBy;
-    state[sb + S.W] = wB;
+    state[sa + BodyState.VX] = vAx;
+    state[sa + BodyState.VY] = vAy;
+    state[sa + BodyState.W] = wA;
+    state[sb + BodyState.VX] = vBx;
+    state[sb + BodyState.VY] = vBy;
+    state[sb + BodyState.W] = wB;
   }
 }
 
@@ -409,34 +409,34 @@ export function solveContacts(
   const ids = cc.ids;
   const soft = cc.softness;
   for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
-    const base = i * C.STRIDE;
-    const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
-    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
-    const mA = d[base + C.MA];
-    const iA = d[base + C.IA];
-    const mB = d[base + C.MB];
-    const iB = d[base + C.IB];
-    const nx = d[base + C.NX];
-    const ny = d[base + C.NY];
-    const k = d[base + C.SOFTNESS] | 0;
+    const base = i * ContactField.STRIDE;
+    const sa = (ids[i * 3] & IndexBound.MAX) * BodyState.STRIDE;
+    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * BodyState.STRIDE;
+    const mA = d[base + ContactField.MA];
+    const iA = d[base + ContactField.IA];
+    const mB = d[base + ContactField.MB];
+    const iB = d[base + ContactField.IB];
+    const nx = d[base + ContactField.NX];
+    const ny = d[base + ContactField.NY];
+    const k = d[base + ContactField.SOFTNESS] | 0;
     const biasRate = soft[k];
     const massScale = soft[k + 1];
     const impulseScale = soft[k + 2];
-    let vAx = state[sa + S.VX];
-    let vAy = state[sa + S.VY];
-    let wA = state[sa + S.W];
-    let vBx = state[sb + S.VX];
-    let vBy = state[sb + S.VY];
-    let wB = state[sb + S.W];
-    const dpx = state[sb + S.DPX] - state[sa + S.DPX];
-    const dpy = state[sb + S.DPY] - state[sa + S.DPY];
-    const qAc = state[sa + S.DQC];
-    const qAs = state[sa + S.DQS];
-    const qBc = state[sb + S.DQC];
-    const qBs = state[sb + S.DQS];
+    let vAx = state[sa + BodyState.VX];
+    let vAy = state[sa + BodyState.VY];
+    let wA = state[sa + BodyState.W];
+    let vBx = state[sb + BodyState.VX];
+    let vBy = state[sb + BodyState.VY];
+    let wB = state[sb + BodyState.W];
+    const dpx = state[sb + BodyState.DPX] - state[sa + BodyState.DPX];
+    const dpy = state[sb + BodyState.DPY] - state[sa + BodyState.DPY];
+    const qAc = state[sa + BodyState.DQC];
+    const qAs = state[sa + BodyState.DQS];
+    const qBc = state[sb + BodyState.DQC];
+    const qBs = state[sb + BodyState.DQS];
     // the anchors' relative motion along the normal, without the anchors: add (qB rB - qA rA) . n
     const dpn = dpx * nx + dpy * ny;
-    const count = d[base + C.COUNT] | 0;
+    const count = d[base + ContactField.COUNT] | 0;
     // The block path's normal impulse, not yet applied to the linear velocities: those enter the
     // friction rows only through (vB - vA) . t, which an impulse along n leaves alone (n . t = 0), so
     // they take the normal and the friction impulses at once, at the end; the turns are applied as
@@ -446,19 +446,31 @@ export function solveContacts(
     // 0.96-1.00x; one seed alone, its pile being chaotic, can come out 1.2x either way).
     let normalImpulse = 0;
 
-    if (d[base + C.BLOCK] === 1) {
-      const p1 = base + C.POINTS;
-      const p2 = p1 + P.STRIDE;
-      const rn1A = d[p1 + P.RNA];
-      const rn1B = d[p1 + P.RNB];
-      const rn2A = d[p2 + P.RNA];
-      const rn2B = d[p2 + P.RNB];
-      // current separations from the motion accumulated since the step began (see P.QA)
-      const s1 = dpn + qBc * d[p1 + P.QB] + qBs * rn1B + qAc * d[p1 + P.QA] - qAs * rn1A + d[p1 + P.ADJ_SEP];
-      const s2 = dpn + qBc * d[p2 + P.QB] + qBs * rn2B + qAc * d[p2 + P.QA] - qAs * rn2A + d[p2 + P.ADJ_SEP];
-      const k11 = d[base + C.K11];
-      const k12 = d[base + C.K12];
-      const k22 = d[base + C.K22];
+    if (d[base + ContactField.BLOCK] === 1) {
+      const p1 = base + ContactField.POINTS;
+      const p2 = p1 + PointField.STRIDE;
+      const rn1A = d[p1 + PointField.RNA];
+      const rn1B = d[p1 + PointField.RNB];
+      const rn2A = d[p2 + PointField.RNA];
+      const rn2B = d[p2 + PointField.RNB];
+      // current separations from the motion accumulated since the step began (see PointField.QA)
+      const s1 =
+        dpn +
+        qBc * d[p1 + PointField.QB] +
+        qBs * rn1B +
+        qAc * d[p1 + PointField.QA] -
+        qAs * rn1A +
+        d[p1 + PointField.ADJ_SEP];
+      const s2 =
+        dpn +
+        qBc * d[p2 + PointField.QB] +
+        qBs * rn2B +
+        qAc * d[p2 + PointField.QA] -
+        qAs * rn2A +
+        d[p2 + PointField.ADJ_SEP];
+      const k11 = d[base + ContactField.K11];
+      const k12 = d[base + ContactField.K12];
+      const k22 = d[base + ContactField.K22];
       // soft terms per point: speculative (s > 0) points may approach until they touch, not further;
       // pushing points follow the soft constraint with bias, or none in the relax pass
       let b1 = 0;
@@ -478,8 +490,8 @@ export function solveContacts(
       const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
       const vn1 = dvn + wB * rn1B - wA * rn1A;
       const vn2 = dvn + wB * rn2B - wA * rn2A;
-      const l1 = d[p1 + P.NIMP];
-      const l2 = d[p2 + P.NIMP];
+      const l1 = d[p1 + PointField.NIMP];
+      const l2 = d[p2 + PointField.NIMP];
       // Soft block solve: find new impulses x >= 0 with vn' + b + G x = 0 on pushing points, where
       // vn' = vn + K (x - l) and G = diag(is/ms * Kii) is each point's compliance. This is exactly the
       // fixed point of the one-point soft update, so the block and the one-point paths agree.
@@ -507,25 +519,31 @@ export function solveContacts(
       }
       const dl1 = x1 - l1;
       const dl2 = x2 - l2;
-      d[p1 + P.NIMP] = x1;
-      d[p2 + P.NIMP] = x2;
+      d[p1 + PointField.NIMP] = x1;
+      d[p2 + PointField.NIMP] = x2;
       // the largest increment, read only as "> 0" (hit events). Not Math.max: V8 compiles it to
       // compares and branches the data decides, which mispredict in piles that move; (a + b + |a - b|)
       // / 2 is branch-free and the max to an ulp
-      const m1 = d[p1 + P.MAX_NIMP];
-      d[p1 + P.MAX_NIMP] = 0.5 * (m1 + dl1 + Math.abs(m1 - dl1));
-      const m2 = d[p2 + P.MAX_NIMP];
-      d[p2 + P.MAX_NIMP] = 0.5 * (m2 + dl2 + Math.abs(m2 - dl2));
+      const m1 = d[p1 + PointField.MAX_NIMP];
+      d[p1 + PointField.MAX_NIMP] = 0.5 * (m1 + dl1 + Math.abs(m1 - dl1));
+      const m2 = d[p2 + PointField.MAX_NIMP];
+      d[p2 + PointField.MAX_NIMP] = 0.5 * (m2 + dl2 + Math.abs(m2 - dl2));
       normalImpulse = dl1 + dl2;
       wA -= iA * (rn1A * dl1 + rn2A * dl2);
       wB += iB * (rn1B * dl1 + rn2B * dl2);
     } else {
       // point by point; the second (if any) in the same code (a loop of one or two turns costs more)
-      let p = base + C.POINTS;
+      let p = base + ContactField.POINTS;
       for (;;) {
-        const rnA = d[p + P.RNA];
-        const rnB = d[p + P.RNB];
-        const sep = dpn + qBc * d[p + P.QB] + qBs * rnB + qAc * d[p + P.QA] - qAs * rnA + d[p + P.ADJ_SEP];
+        const rnA = d[p + PointField.RNA];
+        const rnB = d[p + PointField.RNB];
+        const sep =
+          dpn +
+          qBc * d[p + PointField.QB] +
+          qBs * rnB +
+          qAc * d[p + PointField.QA] -
+          qAs * rnA +
+          d[p + PointField.ADJ_SEP];
         let bias = 0;
         let mScale = 1;
         let iScale = 0;
@@ -536,15 +554,15 @@ export function solveContacts(
           iScale = impulseScale;
         }
         const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * rnB - wA * rnA;
-        const old = d[p + P.NIMP];
-        let impulse = -d[p + P.NMASS] * mScale * (vn + bias) - iScale * old;
+        const old = d[p + PointField.NIMP];
+        let impulse = -d[p + PointField.NMASS] * mScale * (vn + bias) - iScale * old;
         // max(y, 0) without a branch (see the block path), exactly: y + |y| is 2y or 0
         const y = old + impulse;
         const next = 0.5 * (y + Math.abs(y));
         impulse = next - old;
-        d[p + P.NIMP] = next;
-        const mm = d[p + P.MAX_NIMP];
-        d[p + P.MAX_NIMP] = 0.5 * (mm + impulse + Math.abs(mm - impulse));
+        d[p + PointField.NIMP] = next;
+        const mm = d[p + PointField.MAX_NIMP];
+        d[p + PointField.MAX_NIMP] = 0.5 * (mm + impulse + Math.abs(mm - impulse));
         const Px = impulse * nx;
         const Py = impulse * ny;
         vAx -= mA * Px;
@@ -553,46 +571,46 @@ export function solveContacts(
         vBx += mB * Px;
         vBy += mB * Py;
         wB += iB * impulse * rnB;
-        if (count === 1 || p !== base + C.POINTS) break;
-        p += P.STRIDE;
+        if (count === 1 || p !== base + ContactField.POINTS) break;
+        p += PointField.STRIDE;
       }
     }
 
     // friction, point by point (unrolled: a loop of one or two turns cost more than its arithmetic);
     // the relative velocity along t as (vB - vA) . t, which moves only with the friction impulses
     // (by (mA + mB) per unit, t being unit), plus the turns' part
-    const friction = d[base + C.FRICTION];
+    const friction = d[base + ContactField.FRICTION];
     const tx = ny;
     const ty = -nx;
     let dvt = (vBx - vAx) * tx + (vBy - vAy) * ty;
-    let p = base + C.POINTS;
-    let rtA = d[p + P.RTA];
-    let rtB = d[p + P.RTB];
+    let p = base + ContactField.POINTS;
+    let rtA = d[p + PointField.RTA];
+    let rtB = d[p + PointField.RTB];
     let vt = dvt + wB * rtB - wA * rtA;
-    let maxFriction = friction * d[p + P.NIMP];
-    let old = d[p + P.TIMP];
-    let next = old - d[p + P.TMASS] * vt;
+    let maxFriction = friction * d[p + PointField.NIMP];
+    let old = d[p + PointField.TIMP];
+    let next = old - d[p + PointField.TMASS] * vt;
     // biome-ignore lint/complexity/useMathMinMax: compares, as V8 adds NaN and -0 checks to Math.max/min (pyramid 0.99x)
     next = next > maxFriction ? maxFriction : next < -maxFriction ? -maxFriction : next;
     let impulse = next - old;
     let frictionImpulse = impulse;
-    d[p + P.TIMP] = next;
+    d[p + PointField.TIMP] = next;
     wA -= iA * impulse * rtA;
     wB += iB * impulse * rtB;
     if (count === 2) {
-      p += P.STRIDE;
-      rtA = d[p + P.RTA];
-      rtB = d[p + P.RTB];
+      p += PointField.STRIDE;
+      rtA = d[p + PointField.RTA];
+      rtB = d[p + PointField.RTB];
       dvt += (mA + mB) * impulse;
       vt = dvt + wB * rtB - wA * rtA;
-      maxFriction = friction * d[p + P.NIMP];
-      old = d[p + P.TIMP];
-      next = old - d[p + P.TMASS] * vt;
+      maxFriction = friction * d[p + PointField.NIMP];
+      old = d[p + PointField.TIMP];
+      next = old - d[p + PointField.TMASS] * vt;
       // biome-ignore lint/complexity/useMathMinMax: as above
       next = next > maxFriction ? maxFriction : next < -maxFriction ? -maxFriction : next;
       impulse = next - old;
       frictionImpulse += impulse;
-      d[p + P.TIMP] = next;
+      d[p + PointField.TIMP] = next;
       wA -= iA * impulse * rtA;
       wB += iB * impulse * rtB;
     }
@@ -602,12 +620,12 @@ export function solveContacts(
     vAy -= mA * Py;
     vBx += mB * Px;
     vBy += mB * Py;
-    state[sa + S.VX] = vAx;
-    state[sa + S.VY] = vAy;
-    state[sa + S.W] = wA;
-    state[sb + S.VX] = vBx;
-    state[sb + S.VY] = vBy;
-    state[sb + S.W] = wB;
+    state[sa + BodyState.VX] = vAx;
+    state[sa + BodyState.VY] = vAy;
+    state[sa + BodyState.W] = wA;
+    state[sb + BodyState.VX] = vBx;
+    state[sb + BodyState.VY] = vBy;
+    state[sb + BodyState.W] = wB;
   }
 }
 
@@ -670,7 +688,8 @@ function orientContacts(cc: ContactConstraints, ux: number, uy: number): void {
   const lower = cc.lower;
   for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
     // n points from A to B: along gravity, B is under A
-    const down = d[i * C.STRIDE + C.NX] * ux + d[i * C.STRIDE + C.NY] * uy;
+    const down =
+      d[i * ContactField.STRIDE + ContactField.NX] * ux + d[i * ContactField.STRIDE + ContactField.NY] * uy;
     lower[i] = down >= SUPPORT_COSINE ? 1 : down <= -SUPPORT_COSINE ? 0 : -1;
   }
 }
@@ -728,10 +747,10 @@ function listSupports(
   for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
     const level = loadLevel(cc, paths, invMass, i);
     if (level === 0) continue;
-    const base = d[i * C.STRIDE + C.SOFTNESS];
+    const base = d[i * ContactField.STRIDE + ContactField.SOFTNESS];
     const excess = level - cc.levelCaps[base === 0 ? 0 : 1];
     if (excess > cc.levelExcess) cc.levelExcess = excess;
-    d[i * C.STRIDE + C.SOFTNESS] = base + 4 * level;
+    d[i * ContactField.STRIDE + ContactField.SOFTNESS] = base + 4 * level;
     supports[next[lowerDepth(cc, paths, invMass, i)]++] = i * 2 + cc.lower[i];
   }
 }
@@ -746,13 +765,15 @@ function copyConstraint(
 ): void {
   const a = from.data;
   const b = to.data;
-  for (let j = 0; j < C.STRIDE; j++) b[k * C.STRIDE + j] = a[i * C.STRIDE + j];
+  for (let j = 0; j < ContactField.STRIDE; j++)
+    b[k * ContactField.STRIDE + j] = a[i * ContactField.STRIDE + j];
   for (let j = 0; j < 2; j++) {
-    const p = k * C.STRIDE + C.POINTS + j * P.STRIDE;
-    b[p + P.NIMP] *= scale;
-    b[p + P.TIMP] *= scale;
+    const p = k * ContactField.STRIDE + ContactField.POINTS + j * PointField.STRIDE;
+    b[p + PointField.NIMP] *= scale;
+    b[p + PointField.TIMP] *= scale;
   }
-  for (let j = 0; j < R.STRIDE; j++) to.restitution[k * R.STRIDE + j] = from.restitution[i * R.STRIDE + j];
+  for (let j = 0; j < RestitutionField.STRIDE; j++)
+    to.restitution[k * RestitutionField.STRIDE + j] = from.restitution[i * RestitutionField.STRIDE + j];
   for (let j = 0; j < 3; j++) to.ids[k * 3 + j] = from.ids[i * 3 + j];
 }
 
@@ -827,34 +848,42 @@ export function solveSupports(cc: ContactConstraints, state: Float64Array, invH:
   for (let j = 0, n = cc.supportCount & IndexBound.MAX; j < n; j++) {
     const i = supports[j] >> 1;
     const lowerIsB = (supports[j] & 1) === 1;
-    const base = i * C.STRIDE;
-    const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
-    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
+    const base = i * ContactField.STRIDE;
+    const sa = (ids[i * 3] & IndexBound.MAX) * BodyState.STRIDE;
+    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * BodyState.STRIDE;
     // the lower body takes no impulse: its mass is left out
-    const mA = lowerIsB ? d[base + C.MA] : 0;
-    const iA = lowerIsB ? d[base + C.IA] : 0;
-    const mB = lowerIsB ? 0 : d[base + C.MB];
-    const iB = lowerIsB ? 0 : d[base + C.IB];
-    const nx = d[base + C.NX];
-    const ny = d[base + C.NY];
-    let vAx = state[sa + S.VX];
-    let vAy = state[sa + S.VY];
-    let wA = state[sa + S.W];
-    let vBx = state[sb + S.VX];
-    let vBy = state[sb + S.VY];
-    let wB = state[sb + S.W];
-    const dpn = (state[sb + S.DPX] - state[sa + S.DPX]) * nx + (state[sb + S.DPY] - state[sa + S.DPY]) * ny;
-    const qAc = state[sa + S.DQC];
-    const qAs = state[sa + S.DQS];
-    const qBc = state[sb + S.DQC];
-    const qBs = state[sb + S.DQS];
+    const mA = lowerIsB ? d[base + ContactField.MA] : 0;
+    const iA = lowerIsB ? d[base + ContactField.IA] : 0;
+    const mB = lowerIsB ? 0 : d[base + ContactField.MB];
+    const iB = lowerIsB ? 0 : d[base + ContactField.IB];
+    const nx = d[base + ContactField.NX];
+    const ny = d[base + ContactField.NY];
+    let vAx = state[sa + BodyState.VX];
+    let vAy = state[sa + BodyState.VY];
+    let wA = state[sa + BodyState.W];
+    let vBx = state[sb + BodyState.VX];
+    let vBy = state[sb + BodyState.VY];
+    let wB = state[sb + BodyState.W];
+    const dpn =
+      (state[sb + BodyState.DPX] - state[sa + BodyState.DPX]) * nx +
+      (state[sb + BodyState.DPY] - state[sa + BodyState.DPY]) * ny;
+    const qAc = state[sa + BodyState.DQC];
+    const qAs = state[sa + BodyState.DQS];
+    const qBc = state[sb + BodyState.DQC];
+    const qBs = state[sb + BodyState.DQS];
     const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
     // the lower body's linear speed towards the upper one along n
     const lowerSpeed = lowerIsB ? -(vBx * nx + vBy * ny) : vAx * nx + vAy * ny;
-    const p1 = base + C.POINTS;
-    const rn1A = d[p1 + P.RNA];
-    const rn1B = d[p1 + P.RNB];
-    const s1 = dpn + qBc * d[p1 + P.QB] + qBs * rn1B + qAc * d[p1 + P.QA] - qAs * rn1A + d[p1 + P.ADJ_SEP];
+    const p1 = base + ContactField.POINTS;
+    const rn1A = d[p1 + PointField.RNA];
+    const rn1B = d[p1 + PointField.RNB];
+    const s1 =
+      dpn +
+      qBc * d[p1 + PointField.QB] +
+      qBs * rn1B +
+      qAc * d[p1 + PointField.QA] -
+      qAs * rn1A +
+      d[p1 + PointField.ADJ_SEP];
     // each point's normal velocity, plus the gap it may close in the substep, plus its lower body's
     // approach: what a push x must cancel
     const toward1 = lowerSpeed + (lowerIsB ? -wB * rn1B : wA * rn1A);
@@ -864,11 +893,17 @@ export function solveSupports(cc: ContactConstraints, state: Float64Array, invH:
     let x2 = 0;
     let rn2A = 0;
     let rn2B = 0;
-    if (d[base + C.COUNT] === 2) {
-      const p2 = p1 + P.STRIDE;
-      rn2A = d[p2 + P.RNA];
-      rn2B = d[p2 + P.RNB];
-      const s2 = dpn + qBc * d[p2 + P.QB] + qBs * rn2B + qAc * d[p2 + P.QA] - qAs * rn2A + d[p2 + P.ADJ_SEP];
+    if (d[base + ContactField.COUNT] === 2) {
+      const p2 = p1 + PointField.STRIDE;
+      rn2A = d[p2 + PointField.RNA];
+      rn2B = d[p2 + PointField.RNB];
+      const s2 =
+        dpn +
+        qBc * d[p2 + PointField.QB] +
+        qBs * rn2B +
+        qAc * d[p2 + PointField.QA] -
+        qAs * rn2A +
+        d[p2 + PointField.ADJ_SEP];
       const toward2 = lowerSpeed + (lowerIsB ? -wB * rn2B : wA * rn2A);
       const t2 = dvn + wB * rn2B - wA * rn2A + (s2 > 0 ? s2 * invH : 0) + Math.max(toward2, 0);
       const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
@@ -905,12 +940,12 @@ export function solveSupports(cc: ContactConstraints, state: Float64Array, invH:
     vBx += mB * push * nx;
     vBy += mB * push * ny;
     wB += iB * (rn1B * x1 + rn2B * x2);
-    state[sa + S.VX] = vAx;
-    state[sa + S.VY] = vAy;
-    state[sa + S.W] = wA;
-    state[sb + S.VX] = vBx;
-    state[sb + S.VY] = vBy;
-    state[sb + S.W] = wB;
+    state[sa + BodyState.VX] = vAx;
+    state[sa + BodyState.VY] = vAy;
+    state[sa + BodyState.W] = wA;
+    state[sb + BodyState.VX] = vBx;
+    state[sb + BodyState.VY] = vBy;
+    state[sb + BodyState.W] = wB;
   }
 }
 
@@ -923,38 +958,38 @@ export function applyRestitution(cc: ContactConstraints, state: Float64Array, th
   const d = cc.data;
   const ids = cc.ids;
   for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
-    const base = i * C.STRIDE;
-    const rBase = i * R.STRIDE;
-    const restitution = cc.restitution[rBase + R.RESTITUTION];
+    const base = i * ContactField.STRIDE;
+    const rBase = i * RestitutionField.STRIDE;
+    const restitution = cc.restitution[rBase + RestitutionField.RESTITUTION];
     if (restitution === 0) continue;
-    const sa = (ids[i * 3] & IndexBound.MAX) * S.STRIDE;
-    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * S.STRIDE;
-    const mA = d[base + C.MA];
-    const iA = d[base + C.IA];
-    const mB = d[base + C.MB];
-    const iB = d[base + C.IB];
-    const nx = d[base + C.NX];
-    const ny = d[base + C.NY];
-    let vAx = state[sa + S.VX];
-    let vAy = state[sa + S.VY];
-    let wA = state[sa + S.W];
-    let vBx = state[sb + S.VX];
-    let vBy = state[sb + S.VY];
-    let wB = state[sb + S.W];
-    const count = d[base + C.COUNT];
+    const sa = (ids[i * 3] & IndexBound.MAX) * BodyState.STRIDE;
+    const sb = (ids[i * 3 + 1] & IndexBound.MAX) * BodyState.STRIDE;
+    const mA = d[base + ContactField.MA];
+    const iA = d[base + ContactField.IA];
+    const mB = d[base + ContactField.MB];
+    const iB = d[base + ContactField.IB];
+    const nx = d[base + ContactField.NX];
+    const ny = d[base + ContactField.NY];
+    let vAx = state[sa + BodyState.VX];
+    let vAy = state[sa + BodyState.VY];
+    let wA = state[sa + BodyState.W];
+    let vBx = state[sb + BodyState.VX];
+    let vBy = state[sb + BodyState.VY];
+    let wB = state[sb + BodyState.W];
+    const count = d[base + ContactField.COUNT];
     for (let j = 0; j < count; j++) {
-      const p = base + C.POINTS + j * P.STRIDE;
-      const relVel = cc.restitution[rBase + R.REL_VEL + j];
-      if (relVel > -threshold || d[p + P.MAX_NIMP] === 0) continue;
-      const rnA = d[p + P.RNA];
-      const rnB = d[p + P.RNB];
+      const p = base + ContactField.POINTS + j * PointField.STRIDE;
+      const relVel = cc.restitution[rBase + RestitutionField.REL_VEL + j];
+      if (relVel > -threshold || d[p + PointField.MAX_NIMP] === 0) continue;
+      const rnA = d[p + PointField.RNA];
+      const rnB = d[p + PointField.RNB];
       const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * rnB - wA * rnA;
-      const old = d[p + P.NIMP];
-      let impulse = -d[p + P.NMASS] * (vn + restitution * relVel);
+      const old = d[p + PointField.NIMP];
+      let impulse = -d[p + PointField.NMASS] * (vn + restitution * relVel);
       const next = Math.max(old + impulse, 0);
       impulse = next - old;
-      d[p + P.NIMP] = next;
-      d[p + P.MAX_NIMP] = Math.max(d[p + P.MAX_NIMP], impulse);
+      d[p + PointField.NIMP] = next;
+      d[p + PointField.MAX_NIMP] = Math.max(d[p + PointField.MAX_NIMP], impulse);
       const Px = impulse * nx;
       const Py = impulse * ny;
       vAx -= mA * Px;
@@ -964,12 +999,12 @@ export function applyRestitution(cc: ContactConstraints, state: Float64Array, th
       vBy += mB * Py;
       wB += iB * impulse * rnB;
     }
-    state[sa + S.VX] = vAx;
-    state[sa + S.VY] = vAy;
-    state[sa + S.W] = wA;
-    state[sb + S.VX] = vBx;
-    state[sb + S.VY] = vBy;
-    state[sb + S.W] = wB;
+    state[sa + BodyState.VX] = vAx;
+    state[sa + BodyState.VY] = vAy;
+    state[sa + BodyState.W] = wA;
+    state[sb + BodyState.VX] = vBx;
+    state[sb + BodyState.VY] = vBy;
+    state[sb + BodyState.W] = wB;
   }
 }
 
@@ -984,16 +1019,16 @@ export function storeImpulses(
   const d = cc.data;
   const ids = cc.ids;
   for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
-    const base = i * C.STRIDE;
+    const base = i * ContactField.STRIDE;
     const contact = ids[i * 3 + 2];
-    const count = d[base + C.COUNT];
+    const count = d[base + ContactField.COUNT];
     for (let j = 0; j < count; j++) {
-      const p = base + C.POINTS + j * P.STRIDE;
+      const p = base + ContactField.POINTS + j * PointField.STRIDE;
       const k = contact * 2 + j;
-      normalImpulse[k] = d[p + P.NIMP];
-      tangentImpulse[k] = d[p + P.TIMP];
-      maxNormalImpulse[k] = d[p + P.MAX_NIMP];
-      approachSpeed[k] = -cc.restitution[i * R.STRIDE + R.REL_VEL + j];
+      normalImpulse[k] = d[p + PointField.NIMP];
+      tangentImpulse[k] = d[p + PointField.TIMP];
+      maxNormalImpulse[k] = d[p + PointField.MAX_NIMP];
+      approachSpeed[k] = -cc.restitution[i * RestitutionField.STRIDE + RestitutionField.REL_VEL + j];
     }
   }
 }

@@ -2,7 +2,7 @@ import { growF64, growI32, growU8 } from '../core/grow';
 import { IndexBound } from '../core/index-bound';
 import { findRoot, unionRoots } from '../core/union-find';
 import { BodyKind, type BodyStore } from '../store/body-store';
-import { V } from './body-solver';
+import { VelocityUpdate } from './body-solver';
 import { ContactConstraints } from './contact-solver';
 import type { SolverJoint } from './solver-joint';
 
@@ -110,7 +110,8 @@ export class FineIslands {
     }
     this.coarseCount = coarse;
     this.count = count;
-    if (this.update.length < count * V.STRIDE) this.update = growF64(this.update, 2 * count * V.STRIDE);
+    if (this.update.length < count * VelocityUpdate.STRIDE)
+      this.update = growF64(this.update, 2 * count * VelocityUpdate.STRIDE);
     return count > 0;
   }
 }

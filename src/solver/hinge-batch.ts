@@ -1,6 +1,6 @@
 import { growF64, growI32 } from '../core/grow';
 import { IndexBound } from '../core/index-bound';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import { GraphColoring } from './graph-color';
 import type { JointContext } from './joint-context';
 import { PointRows } from './point-rows';
@@ -8,7 +8,7 @@ import type { Softness } from './softness';
 import type { SolverJoint } from './solver-joint';
 
 // Layout of one hinge in `HingeBatch.data` (doubles); see SolverJoint for the meaning of the fields.
-export enum H {
+export enum HingeField {
   MA = 0,
   IA = 1,
   MB = 2,
@@ -53,7 +53,7 @@ export enum Anchor {
 }
 
 /**
- * Writes the step data of hinge records `from` to `to` - 1 (H.MA .. H.DCY, and H.RAX .. H.M22 for
+ * Writes the step data of hinge records `from` to `to` - 1 (HingeField.MA .. HingeField.DCY, and HingeField.RAX .. HingeField.M22 for
  * the first substep) to `d`: the bodies' inverse masses, the anchors relative to the centres of
  * mass, world-oriented, and the centres' offset. The bodies' slots are read from `ids` (2 a record),
  * the local anchors from `anchors` (Anchor layout), whose anchors relative to the centres it fills
@@ -69,7 +69,7 @@ export function writeStepData(
   d: Float64Array,
   from: number,
   to: number,
-  stride: number = H.STRIDE,
+  stride: number = HingeField.STRIDE,
 ): void {
   const invMass = ctx.invMass;
   const invInertia = ctx.invInertia;
@@ -80,10 +80,10 @@ export function writeStepData(
     const b = ids[2 * i + 1] & IndexBound.MAX;
     const base = i * stride;
     const k = i * Anchor.STRIDE;
-    d[base + H.MA] = invMass[a];
-    d[base + H.IA] = invInertia[a];
-    d[base + H.MB] = invMass[b];
-    d[base + H.IB] = invInertia[b];
+    d[base + HingeField.MA] = invMass[a];
+    d[base + HingeField.IA] = invInertia[a];
+    d[base + HingeField.MB] = invMass[b];
+    d[base + HingeField.IB] = invInertia[b];
     anchors[k + Anchor.CAX] = anchors[k + Anchor.AX] - lcx[a];
     anchors[k + Anchor.CAY] = anchors[k + Anchor.AY] - lcy[a];
     anchors[k + Anchor.CBX] = anchors[k + Anchor.BX] - lcx[b];
@@ -106,7 +106,7 @@ export function turnStepData(
   d: Float64Array,
   from: number,
   to: number,
-  stride: number = H.STRIDE,
+  stride: number = HingeField.STRIDE,
 ): void {
   const qc = ctx.qc;
   const qs = ctx.qs;
@@ -129,17 +129,17 @@ export function turnStepData(
     y = anchors[k + Anchor.CBY];
     const rBx = rows.turnedX(c, s, x, y);
     const rBy = rows.turnedY(c, s, x, y);
-    d[base + H.RAX0] = rAx;
-    d[base + H.RAY0] = rAy;
-    d[base + H.RBX0] = rBx;
-    d[base + H.RBY0] = rBy;
-    d[base + H.DCX] = cx[b] - cx[a];
-    d[base + H.DCY] = cy[b] - cy[a];
+    d[base + HingeField.RAX0] = rAx;
+    d[base + HingeField.RAY0] = rAy;
+    d[base + HingeField.RBX0] = rBx;
+    d[base + HingeField.RBY0] = rBy;
+    d[base + HingeField.DCX] = cx[b] - cx[a];
+    d[base + HingeField.DCY] = cy[b] - cy[a];
     // no body has turned yet since the step began: the first substep's anchors are the step's own
-    d[base + H.RAX] = rAx;
-    d[base + H.RAY] = rAy;
-    d[base + H.RBX] = rBx;
-    d[base + H.RBY] = rBy;
+    d[base + HingeField.RAX] = rAx;
+    d[base + HingeField.RAY] = rAy;
+    d[base + HingeField.RBX] = rBx;
+    d[base + HingeField.RBY] = rBy;
     storeInverseMass(rows, d, base, rAx, rAy, rBx, rBy);
   }
 }
@@ -223,7 +223,7 @@ export class HingeBatch {
     // the last batch's hinges take their impulses back (those that stay bring them in again)
     const previous = this.joints;
     for (let i = 0; i < this.count; i++) {
-      previous[i].unpackHinge(this.data, i * H.STRIDE, this.invH);
+      previous[i].unpackHinge(this.data, i * HingeField.STRIDE, this.invH);
       if (carry) previous[i].carriedSlot = i;
     }
     const previousCount = this.count;
@@ -247,9 +247,9 @@ export class HingeBatch {
     for (const joint of iterative) if (!joint.isPlainHinge()) this.otherIterative.push(joint);
     this.orderByColor(ctx);
     const n = joints.length;
-    if (this.data.length < n * H.STRIDE) {
+    if (this.data.length < n * HingeField.STRIDE) {
       const capacity = Math.max(64, 2 * n);
-      this.data = growF64(this.data, capacity * H.STRIDE);
+      this.data = growF64(this.data, capacity * HingeField.STRIDE);
       this.anchors = growF64(this.anchors, capacity * Anchor.STRIDE);
     }
     if (this.ids.length < 2 * n) this.ids = growI32(this.ids, Math.max(128, 4 * n));
@@ -259,7 +259,8 @@ export class HingeBatch {
       const k = joint.carriedSlot;
       if (k < 0) continue;
       // copied field by field: a subarray view per hinge is an allocation
-      for (let f = 0; f < H.STRIDE; f++) this.data[i * H.STRIDE + f] = previousData[k * H.STRIDE + f];
+      for (let f = 0; f < HingeField.STRIDE; f++)
+        this.data[i * HingeField.STRIDE + f] = previousData[k * HingeField.STRIDE + f];
       for (let f = 0; f < Anchor.STRIDE; f++) {
         this.anchors[i * Anchor.STRIDE + f] = previousAnchors[k * Anchor.STRIDE + f];
       }
@@ -311,25 +312,25 @@ export class HingeBatch {
     const ids = this.ids;
     const v2 = speedLimit * speedLimit;
     for (let i = 0, n = this.count & IndexBound.MAX; i < n; i++) {
-      const base = i * H.STRIDE;
-      const sa = (ids[2 * i] & IndexBound.MAX) * S.STRIDE;
-      const sb = (ids[2 * i + 1] & IndexBound.MAX) * S.STRIDE;
-      const mA = d[base + H.MA];
-      const iA = d[base + H.IA];
-      const mB = d[base + H.MB];
-      const iB = d[base + H.IB];
-      const rAx = d[base + H.RAX];
-      const rAy = d[base + H.RAY];
-      const rBx = d[base + H.RBX];
-      const rBy = d[base + H.RBY];
-      const vAx = state[sa + S.VX];
-      const vAy = state[sa + S.VY];
-      const wA = state[sa + S.W];
-      const vBx = state[sb + S.VX];
-      const vBy = state[sb + S.VY];
-      const wB = state[sb + S.W];
-      const px = d[base + H.LX];
-      const py = d[base + H.LY];
+      const base = i * HingeField.STRIDE;
+      const sa = (ids[2 * i] & IndexBound.MAX) * BodyState.STRIDE;
+      const sb = (ids[2 * i + 1] & IndexBound.MAX) * BodyState.STRIDE;
+      const mA = d[base + HingeField.MA];
+      const iA = d[base + HingeField.IA];
+      const mB = d[base + HingeField.MB];
+      const iB = d[base + HingeField.IB];
+      const rAx = d[base + HingeField.RAX];
+      const rAy = d[base + HingeField.RAY];
+      const rBx = d[base + HingeField.RBX];
+      const rBy = d[base + HingeField.RBY];
+      const vAx = state[sa + BodyState.VX];
+      const vAy = state[sa + BodyState.VY];
+      const wA = state[sa + BodyState.W];
+      const vBx = state[sb + BodyState.VX];
+      const vBy = state[sb + BodyState.VY];
+      const wB = state[sb + BodyState.W];
+      const px = d[base + HingeField.LX];
+      const py = d[base + HingeField.LY];
       // applyPointTurnImpulse with a zero axial impulse, as the revolute joint's warm start adds its
       // own (the same bits), worked out before it is stored: applied and then taken back when the
       // guard fails, it cost a hinge grid 1.05x the step
@@ -346,15 +347,15 @@ export class HingeBatch {
         Math.abs(nwA) <= turnLimit &&
         Math.abs(nwB) <= turnLimit
       ) {
-        state[sa + S.VX] = nAx;
-        state[sa + S.VY] = nAy;
-        state[sa + S.W] = nwA;
-        state[sb + S.VX] = nBx;
-        state[sb + S.VY] = nBy;
-        state[sb + S.W] = nwB;
+        state[sa + BodyState.VX] = nAx;
+        state[sa + BodyState.VY] = nAy;
+        state[sa + BodyState.W] = nwA;
+        state[sb + BodyState.VX] = nBx;
+        state[sb + BodyState.VY] = nBy;
+        state[sb + BodyState.W] = nwB;
       } else {
-        d[base + H.LX] = 0;
-        d[base + H.LY] = 0;
+        d[base + HingeField.LX] = 0;
+        d[base + HingeField.LY] = 0;
       }
     }
   }
@@ -372,35 +373,47 @@ export class HingeBatch {
     const massScale = soft.massScale;
     const impulseScale = soft.impulseScale;
     for (let i = 0, n = this.count & IndexBound.MAX; i < n; i++) {
-      const base = i * H.STRIDE;
-      const sa = (ids[2 * i] & IndexBound.MAX) * S.STRIDE;
-      const sb = (ids[2 * i + 1] & IndexBound.MAX) * S.STRIDE;
-      const rAx = d[base + H.RAX];
-      const rAy = d[base + H.RAY];
-      const rBx = d[base + H.RBX];
-      const rBy = d[base + H.RBY];
-      const vAx = state[sa + S.VX];
-      const vAy = state[sa + S.VY];
-      const wA = state[sa + S.W];
-      const vBx = state[sb + S.VX];
-      const vBy = state[sb + S.VY];
-      const wB = state[sb + S.W];
+      const base = i * HingeField.STRIDE;
+      const sa = (ids[2 * i] & IndexBound.MAX) * BodyState.STRIDE;
+      const sb = (ids[2 * i + 1] & IndexBound.MAX) * BodyState.STRIDE;
+      const rAx = d[base + HingeField.RAX];
+      const rAy = d[base + HingeField.RAY];
+      const rBx = d[base + HingeField.RBX];
+      const rBy = d[base + HingeField.RBY];
+      const vAx = state[sa + BodyState.VX];
+      const vAy = state[sa + BodyState.VY];
+      const wA = state[sa + BodyState.W];
+      const vBx = state[sb + BodyState.VX];
+      const vBy = state[sb + BodyState.VY];
+      const wB = state[sb + BodyState.W];
       // the pull bounded, as in the other joints (see JointTree's pushLimit)
-      const errorX = rows.separation(state[sa + S.DPX], state[sb + S.DPX], d[base + H.DCX], rAx, rBx);
-      const errorY = rows.separation(state[sa + S.DPY], state[sb + S.DPY], d[base + H.DCY], rAy, rBy);
+      const errorX = rows.separation(
+        state[sa + BodyState.DPX],
+        state[sb + BodyState.DPX],
+        d[base + HingeField.DCX],
+        rAx,
+        rBx,
+      );
+      const errorY = rows.separation(
+        state[sa + BodyState.DPY],
+        state[sb + BodyState.DPY],
+        d[base + HingeField.DCY],
+        rAy,
+        rBy,
+      );
       const bx = rows.speedX(vAx, wA, rAy, vBx, wB, rBy) + rows.boundedBias(biasRate, errorX, pushLimit);
       const by = rows.speedY(vAy, wA, rAx, vBy, wB, rBx) + rows.boundedBias(biasRate, errorY, pushLimit);
-      const lx = d[base + H.LX];
-      const ly = d[base + H.LY];
-      const m12 = d[base + H.M12];
-      const px = rows.softImpulse(massScale, impulseScale, d[base + H.M11] * bx + m12 * by, lx);
-      const py = rows.softImpulse(massScale, impulseScale, m12 * bx + d[base + H.M22] * by, ly);
-      d[base + H.LX] = lx + px;
-      d[base + H.LY] = ly + py;
-      const mA = d[base + H.MA];
-      const iA = d[base + H.IA];
-      const mB = d[base + H.MB];
-      const iB = d[base + H.IB];
+      const lx = d[base + HingeField.LX];
+      const ly = d[base + HingeField.LY];
+      const m12 = d[base + HingeField.M12];
+      const px = rows.softImpulse(massScale, impulseScale, d[base + HingeField.M11] * bx + m12 * by, lx);
+      const py = rows.softImpulse(massScale, impulseScale, m12 * bx + d[base + HingeField.M22] * by, ly);
+      d[base + HingeField.LX] = lx + px;
+      d[base + HingeField.LY] = ly + py;
+      const mA = d[base + HingeField.MA];
+      const iA = d[base + HingeField.IA];
+      const mB = d[base + HingeField.MB];
+      const iB = d[base + HingeField.IB];
       rows.applyImpulse(state, sa, sb, mA, iA, mB, iB, rAx, rAy, rBx, rBy, px, py);
     }
   }
@@ -420,38 +433,38 @@ export class HingeBatch {
     const d = this.data;
     const ids = this.ids;
     for (let i = 0, n = this.count & IndexBound.MAX; i < n; i++) {
-      const base = i * H.STRIDE;
-      const sa = (ids[2 * i] & IndexBound.MAX) * S.STRIDE;
-      const sb = (ids[2 * i + 1] & IndexBound.MAX) * S.STRIDE;
+      const base = i * HingeField.STRIDE;
+      const sa = (ids[2 * i] & IndexBound.MAX) * BodyState.STRIDE;
+      const sb = (ids[2 * i + 1] & IndexBound.MAX) * BodyState.STRIDE;
       // each field read once into a local: TurboFan loads (and bounds-checks) a typed-array element
       // again at every read after a store to the same array
-      const mA = d[base + H.MA];
-      const iA = d[base + H.IA];
-      const mB = d[base + H.MB];
-      const iB = d[base + H.IB];
-      const rAx0 = d[base + H.RAX0];
-      const rAy0 = d[base + H.RAY0];
-      const rBx0 = d[base + H.RBX0];
-      const rBy0 = d[base + H.RBY0];
-      let c = state[sa + S.DQC];
-      let s = state[sa + S.DQS];
+      const mA = d[base + HingeField.MA];
+      const iA = d[base + HingeField.IA];
+      const mB = d[base + HingeField.MB];
+      const iB = d[base + HingeField.IB];
+      const rAx0 = d[base + HingeField.RAX0];
+      const rAy0 = d[base + HingeField.RAY0];
+      const rBx0 = d[base + HingeField.RBX0];
+      const rBy0 = d[base + HingeField.RBY0];
+      let c = state[sa + BodyState.DQC];
+      let s = state[sa + BodyState.DQS];
       const rAx = rows.turnedX(c, s, rAx0, rAy0);
       const rAy = rows.turnedY(c, s, rAx0, rAy0);
-      c = state[sb + S.DQC];
-      s = state[sb + S.DQS];
+      c = state[sb + BodyState.DQC];
+      s = state[sb + BodyState.DQS];
       const rBx = rows.turnedX(c, s, rBx0, rBy0);
       const rBy = rows.turnedY(c, s, rBx0, rBy0);
-      d[base + H.RAX] = rAx;
-      d[base + H.RAY] = rAy;
-      d[base + H.RBX] = rBx;
-      d[base + H.RBY] = rBy;
+      d[base + HingeField.RAX] = rAx;
+      d[base + HingeField.RAY] = rAy;
+      d[base + HingeField.RBX] = rBx;
+      d[base + HingeField.RBY] = rBy;
       if (last) {
-        d[base + H.RAX0] = rAx;
-        d[base + H.RAY0] = rAy;
-        d[base + H.RBX0] = rBx;
-        d[base + H.RBY0] = rBy;
-        d[base + H.DCX] += state[sb + S.DPX] - state[sa + S.DPX];
-        d[base + H.DCY] += state[sb + S.DPY] - state[sa + S.DPY];
+        d[base + HingeField.RAX0] = rAx;
+        d[base + HingeField.RAY0] = rAy;
+        d[base + HingeField.RBX0] = rBx;
+        d[base + HingeField.RBY0] = rBy;
+        d[base + HingeField.DCX] += state[sb + BodyState.DPX] - state[sa + BodyState.DPX];
+        d[base + HingeField.DCY] += state[sb + BodyState.DPY] - state[sa + BodyState.DPY];
       }
       // K's inverse, as storeInverseMass, but kept in locals for the impulse below (reading it back
       // from the record cost the grid 3 %)
@@ -462,17 +475,17 @@ export class HingeBatch {
       const m11 = det * k22;
       const m12 = -det * k12;
       const m22 = det * k11;
-      d[base + H.M11] = m11;
-      d[base + H.M12] = m12;
-      d[base + H.M22] = m22;
-      const wA = state[sa + S.W];
-      const wB = state[sb + S.W];
-      const bx = rows.speedX(state[sa + S.VX], wA, rAy, state[sb + S.VX], wB, rBy);
-      const by = rows.speedY(state[sa + S.VY], wA, rAx, state[sb + S.VY], wB, rBx);
+      d[base + HingeField.M11] = m11;
+      d[base + HingeField.M12] = m12;
+      d[base + HingeField.M22] = m22;
+      const wA = state[sa + BodyState.W];
+      const wB = state[sb + BodyState.W];
+      const bx = rows.speedX(state[sa + BodyState.VX], wA, rAy, state[sb + BodyState.VX], wB, rBy);
+      const by = rows.speedY(state[sa + BodyState.VY], wA, rAx, state[sb + BodyState.VY], wB, rBx);
       const px = -(m11 * bx + m12 * by);
       const py = -(m12 * bx + m22 * by);
-      d[base + H.LX] += px;
-      d[base + H.LY] += py;
+      d[base + HingeField.LX] += px;
+      d[base + HingeField.LY] += py;
       rows.applyImpulse(state, sa, sb, mA, iA, mB, iB, rAx, rAy, rBx, rBy, px, py);
     }
     if (last) this.carried = true;
@@ -489,15 +502,15 @@ function storeInverseMass(
   rBx: number,
   rBy: number,
 ): void {
-  const mA = d[base + H.MA];
-  const iA = d[base + H.IA];
-  const mB = d[base + H.MB];
-  const iB = d[base + H.IB];
+  const mA = d[base + HingeField.MA];
+  const iA = d[base + HingeField.IA];
+  const mB = d[base + HingeField.MB];
+  const iB = d[base + HingeField.IB];
   const k11 = rows.massDiagonal(mA + mB, iA, rAy, iB, rBy);
   const k12 = rows.massCoupling(iA, rAx, rAy, iB, rBx, rBy);
   const k22 = rows.massDiagonal(mA + mB, iA, rAx, iB, rBx);
   const det = rows.inverseDeterminant(k11, k12, k22);
-  d[base + H.M11] = det * k22;
-  d[base + H.M12] = -det * k12;
-  d[base + H.M22] = det * k11;
+  d[base + HingeField.M11] = det * k22;
+  d[base + HingeField.M12] = -det * k12;
+  d[base + HingeField.M22] = det * k11;
 }

@@ -1,20 +1,21 @@
 import { growF64, growI32 } from '../core/grow';
 import { IndexBound } from '../core/index-bound';
-import { S } from '../store/body-store';
-import { Anchor, H, turnStepData, writeStepData } from './hinge-batch';
+import { BodyState } from '../store/body-store';
+import { Anchor, HingeField, turnStepData, writeStepData } from './hinge-batch';
 import type { JointContext } from './joint-context';
 import { PointRows } from './point-rows';
 import type { SolverJoint } from './solver-joint';
 
 /**
- * Layout of one hinge of a path in `HingePaths.data` (doubles): the hinge batch's step data (H.MA ..
- * H.DCY, and H.RAX .. H.RBY for the current anchors), with the body before the hinge on the path as
- * A and the one after it as B, then the factorization's and the projection's numbers.
+ * Layout of one hinge of a path in `HingePaths.data` (doubles): the hinge batch's step data
+ * (HingeField.MA .. HingeField.DCY, and HingeField.RAX .. HingeField.RBY for the current anchors),
+ * with the body before the hinge on the path as A and the one after it as B, then the
+ * factorization's and the projection's numbers.
  */
-export enum P {
+export enum PathField {
   /**
    * separation of the anchors (after minus before) at the last factorization; the first field after
-   * H's, written as a number: a bundler compiling file by file cannot read H.STRIDE
+   * HingeField's, written as a number: a bundler compiling file by file cannot read HingeField.STRIDE
    */
   EX = 19,
   EY,
@@ -99,7 +100,7 @@ export class HingePaths {
     const k = this.count;
     if (this.ids.length < 2 * (k + 1)) {
       const cap = Math.max(16, 2 * (k + 1));
-      this.data = growF64(this.data, cap * P.STRIDE);
+      this.data = growF64(this.data, cap * PathField.STRIDE);
       this.ids = growI32(this.ids, 2 * cap);
       this.anchors = growF64(this.anchors, Anchor.STRIDE * cap);
       this.orientation = growF64(this.orientation, cap);
@@ -109,7 +110,7 @@ export class HingePaths {
     if (
       this.previous[k] !== joint ||
       this.orientation[k] !== sense ||
-      this.data[k * P.STRIDE + P.LINK] !== link
+      this.data[k * PathField.STRIDE + PathField.LINK] !== link
     ) {
       this.sameLayout = false;
     }
@@ -124,7 +125,7 @@ export class HingePaths {
     this.anchors[o + Anchor.BY] = forward ? joint.localAnchorBy : joint.localAnchorAy;
     this.laid = true;
     this.orientation[k] = sense;
-    this.data[k * P.STRIDE + P.LINK] = link;
+    this.data[k * PathField.STRIDE + PathField.LINK] = link;
     // a hinge here is not prepared (HingePaths reads its step data itself): impulses of rows it had
     // before (limit, motor, spring) must not linger in its reaction torque
     joint.onPath = true;
@@ -147,8 +148,8 @@ export class HingePaths {
     // the masses and centres change only with a body's mass, which lays the paths anew
     if (!carry) {
       if (this.laid)
-        writeStepData(ctx, this.#rows, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
-      else turnStepData(ctx, this.#rows, this.ids, this.anchors, this.data, 0, this.count, P.STRIDE);
+        writeStepData(ctx, this.#rows, this.ids, this.anchors, this.data, 0, this.count, PathField.STRIDE);
+      else turnStepData(ctx, this.#rows, this.ids, this.anchors, this.data, 0, this.count, PathField.STRIDE);
     }
     this.startFactored = carry;
     this.carried = false;
@@ -178,46 +179,46 @@ export class HingePaths {
     let e12 = 0;
     let e22 = 0;
     for (let k = 0, n = this.count & IndexBound.MAX; k < n; k++) {
-      const base = k * P.STRIDE;
-      const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
-      const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
+      const base = k * PathField.STRIDE;
+      const sa = (ids[2 * k] & IndexBound.MAX) * BodyState.STRIDE;
+      const sb = (ids[2 * k + 1] & IndexBound.MAX) * BodyState.STRIDE;
       // every field read once and before the stores (see HingeBatch.relax)
-      const mA = d[base + H.MA];
-      const iA = d[base + H.IA];
-      const mB = d[base + H.MB];
-      const iB = d[base + H.IB];
-      const link = d[base + P.LINK];
-      const dcx = d[base + H.DCX];
-      const dcy = d[base + H.DCY];
-      const rAx0 = d[base + H.RAX0];
-      const rAy0 = d[base + H.RAY0];
-      const rBx0 = d[base + H.RBX0];
-      const rBy0 = d[base + H.RBY0];
-      let c = state[sa + S.DQC];
-      let s = state[sa + S.DQS];
+      const mA = d[base + HingeField.MA];
+      const iA = d[base + HingeField.IA];
+      const mB = d[base + HingeField.MB];
+      const iB = d[base + HingeField.IB];
+      const link = d[base + PathField.LINK];
+      const dcx = d[base + HingeField.DCX];
+      const dcy = d[base + HingeField.DCY];
+      const rAx0 = d[base + HingeField.RAX0];
+      const rAy0 = d[base + HingeField.RAY0];
+      const rBx0 = d[base + HingeField.RBX0];
+      const rBy0 = d[base + HingeField.RBY0];
+      let c = state[sa + BodyState.DQC];
+      let s = state[sa + BodyState.DQS];
       const rAx = rows.turnedX(c, s, rAx0, rAy0);
       const rAy = rows.turnedY(c, s, rAx0, rAy0);
-      c = state[sb + S.DQC];
-      s = state[sb + S.DQS];
+      c = state[sb + BodyState.DQC];
+      s = state[sb + BodyState.DQS];
       const rBx = rows.turnedX(c, s, rBx0, rBy0);
       const rBy = rows.turnedY(c, s, rBx0, rBy0);
-      d[base + H.RAX] = rAx;
-      d[base + H.RAY] = rAy;
-      d[base + H.RBX] = rBx;
-      d[base + H.RBY] = rBy;
-      const dpAx = state[sa + S.DPX];
-      const dpAy = state[sa + S.DPY];
-      const dpBx = state[sb + S.DPX];
-      const dpBy = state[sb + S.DPY];
-      d[base + P.EX] = rows.separation(dpAx, dpBx, dcx, rAx, rBx);
-      d[base + P.EY] = rows.separation(dpAy, dpBy, dcy, rAy, rBy);
+      d[base + HingeField.RAX] = rAx;
+      d[base + HingeField.RAY] = rAy;
+      d[base + HingeField.RBX] = rBx;
+      d[base + HingeField.RBY] = rBy;
+      const dpAx = state[sa + BodyState.DPX];
+      const dpAy = state[sa + BodyState.DPY];
+      const dpBx = state[sb + BodyState.DPX];
+      const dpBy = state[sb + BodyState.DPY];
+      d[base + PathField.EX] = rows.separation(dpAx, dpBx, dcx, rAx, rBx);
+      d[base + PathField.EY] = rows.separation(dpAy, dpBy, dcy, rAy, rBy);
       if (last) {
-        d[base + H.RAX0] = rAx;
-        d[base + H.RAY0] = rAy;
-        d[base + H.RBX0] = rBx;
-        d[base + H.RBY0] = rBy;
-        d[base + H.DCX] = dcx + (dpBx - dpAx);
-        d[base + H.DCY] = dcy + (dpBy - dpAy);
+        d[base + HingeField.RAX0] = rAx;
+        d[base + HingeField.RAY0] = rAy;
+        d[base + HingeField.RBX0] = rBx;
+        d[base + HingeField.RBY0] = rBy;
+        d[base + HingeField.DCX] = dcx + (dpBx - dpAx);
+        d[base + HingeField.DCY] = dcy + (dpBy - dpAy);
       }
       // the coupling to the previous hinge through body A (B of that one): the velocity of this
       // hinge's rows per unit impulse on the previous one's, -(m 1 + i r⊥ q⊥ᵀ)
@@ -229,10 +230,10 @@ export class HingePaths {
       const l12 = b11 * e12 + b12 * e22;
       const l21 = b21 * e11 + b22 * e12;
       const l22 = b21 * e12 + b22 * e22;
-      d[base + P.L11] = l11;
-      d[base + P.L12] = l12;
-      d[base + P.L21] = l21;
-      d[base + P.L22] = l22;
+      d[base + PathField.L11] = l11;
+      d[base + PathField.L12] = l12;
+      d[base + PathField.L21] = l21;
+      d[base + PathField.L22] = l22;
       // the pivot: this hinge's own effective mass K less what the previous hinges take of it
       const d11 = rows.pathMassDiagonal(mA + mB, iA, rAy, iB, rBy) - (l11 * b11 + l12 * b12);
       const d12 = rows.pathMassCoupling(iA, rAx, rAy, iB, rBx, rBy) - (l11 * b21 + l12 * b22);
@@ -241,9 +242,9 @@ export class HingePaths {
       e11 = det * d22;
       e12 = -det * d12;
       e22 = det * d11;
-      d[base + P.E11] = e11;
-      d[base + P.E12] = e12;
-      d[base + P.E22] = e22;
+      d[base + PathField.E11] = e11;
+      d[base + PathField.E12] = e12;
+      d[base + PathField.E22] = e22;
       qx = rBx;
       qy = rBy;
     }
@@ -264,23 +265,35 @@ export class HingePaths {
     let yx = 0;
     let yy = 0;
     for (let k = 0; k < n; k++) {
-      const base = k * P.STRIDE;
-      const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
-      const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
-      const wA = state[sa + S.W];
-      const wB = state[sb + S.W];
+      const base = k * PathField.STRIDE;
+      const sa = (ids[2 * k] & IndexBound.MAX) * BodyState.STRIDE;
+      const sb = (ids[2 * k + 1] & IndexBound.MAX) * BodyState.STRIDE;
+      const wA = state[sa + BodyState.W];
+      const wB = state[sb + BodyState.W];
       // -(J v + bias): the speed with the bodies' roles swapped is -J v (see PointRows.speedX)
       const rx =
-        rows.speedX(state[sb + S.VX], wB, d[base + H.RBY], state[sa + S.VX], wA, d[base + H.RAY]) -
-        rows.boundedBias(biasRate, d[base + P.EX], limit);
+        rows.speedX(
+          state[sb + BodyState.VX],
+          wB,
+          d[base + HingeField.RBY],
+          state[sa + BodyState.VX],
+          wA,
+          d[base + HingeField.RAY],
+        ) - rows.boundedBias(biasRate, d[base + PathField.EX], limit);
       const ry =
-        rows.speedY(state[sb + S.VY], wB, d[base + H.RBX], state[sa + S.VY], wA, d[base + H.RAX]) -
-        rows.boundedBias(biasRate, d[base + P.EY], limit);
-      const nx = rx - (d[base + P.L11] * yx + d[base + P.L12] * yy);
-      yy = ry - (d[base + P.L21] * yx + d[base + P.L22] * yy);
+        rows.speedY(
+          state[sb + BodyState.VY],
+          wB,
+          d[base + HingeField.RBX],
+          state[sa + BodyState.VY],
+          wA,
+          d[base + HingeField.RAX],
+        ) - rows.boundedBias(biasRate, d[base + PathField.EY], limit);
+      const nx = rx - (d[base + PathField.L11] * yx + d[base + PathField.L12] * yy);
+      yy = ry - (d[base + PathField.L21] * yx + d[base + PathField.L22] * yy);
       yx = nx;
-      d[base + P.YX] = yx;
-      d[base + P.YY] = yy;
+      d[base + PathField.YX] = yx;
+      d[base + PathField.YY] = yy;
     }
     // backward: λ_k = D_k⁻¹ y_k - L_k+1ᵀ λ_k+1, applied to the bodies as it is found
     let px = 0;
@@ -291,30 +304,30 @@ export class HingePaths {
     let l22 = 0;
     const keep = first ? 0 : 1;
     for (let k = n - 1; k >= 0; k--) {
-      const base = k * P.STRIDE;
-      const y1 = d[base + P.YX];
-      const y2 = d[base + P.YY];
-      const e12 = d[base + P.E12];
-      const nx = d[base + P.E11] * y1 + e12 * y2 - (l11 * px + l21 * py);
-      const ny = e12 * y1 + d[base + P.E22] * y2 - (l12 * px + l22 * py);
+      const base = k * PathField.STRIDE;
+      const y1 = d[base + PathField.YX];
+      const y2 = d[base + PathField.YY];
+      const e12 = d[base + PathField.E12];
+      const nx = d[base + PathField.E11] * y1 + e12 * y2 - (l11 * px + l21 * py);
+      const ny = e12 * y1 + d[base + PathField.E22] * y2 - (l12 * px + l22 * py);
       px = nx;
       py = ny;
-      l11 = d[base + P.L11];
-      l12 = d[base + P.L12];
-      l21 = d[base + P.L21];
-      l22 = d[base + P.L22];
-      const mA = d[base + H.MA];
-      const iA = d[base + H.IA];
-      const mB = d[base + H.MB];
-      const iB = d[base + H.IB];
-      const rAx = d[base + H.RAX];
-      const rAy = d[base + H.RAY];
-      const rBx = d[base + H.RBX];
-      const rBy = d[base + H.RBY];
-      d[base + H.LX] = keep * d[base + H.LX] + px;
-      d[base + H.LY] = keep * d[base + H.LY] + py;
-      const sa = (ids[2 * k] & IndexBound.MAX) * S.STRIDE;
-      const sb = (ids[2 * k + 1] & IndexBound.MAX) * S.STRIDE;
+      l11 = d[base + PathField.L11];
+      l12 = d[base + PathField.L12];
+      l21 = d[base + PathField.L21];
+      l22 = d[base + PathField.L22];
+      const mA = d[base + HingeField.MA];
+      const iA = d[base + HingeField.IA];
+      const mB = d[base + HingeField.MB];
+      const iB = d[base + HingeField.IB];
+      const rAx = d[base + HingeField.RAX];
+      const rAy = d[base + HingeField.RAY];
+      const rBx = d[base + HingeField.RBX];
+      const rBy = d[base + HingeField.RBY];
+      d[base + HingeField.LX] = keep * d[base + HingeField.LX] + px;
+      d[base + HingeField.LY] = keep * d[base + HingeField.LY] + py;
+      const sa = (ids[2 * k] & IndexBound.MAX) * BodyState.STRIDE;
+      const sb = (ids[2 * k + 1] & IndexBound.MAX) * BodyState.STRIDE;
       rows.applyImpulse(state, sa, sb, mA, iA, mB, iB, rAx, rAy, rBx, rBy, px, py);
     }
   }
@@ -326,10 +339,10 @@ export class HingePaths {
   store(ctx: JointContext): void {
     const d = this.data;
     for (let k = 0; k < this.count; k++) {
-      const base = k * P.STRIDE;
+      const base = k * PathField.STRIDE;
       const sense = this.orientation[k];
-      d[base + H.LX] *= sense;
-      d[base + H.LY] *= sense;
+      d[base + HingeField.LX] *= sense;
+      d[base + HingeField.LY] *= sense;
       this.joints[k].unpackHinge(d, base, ctx.invH);
     }
   }

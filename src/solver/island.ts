@@ -2,7 +2,7 @@ import { IntList } from '../broad-phase/int-list';
 import { growF64, growI32 } from '../core/grow';
 import { TIME_TO_SLEEP } from '../core/settings';
 import { findRoot, unionRoots } from '../core/union-find';
-import { BodyFlag, BodyKind, type BodyStore, S } from '../store/body-store';
+import { BodyFlag, BodyKind, BodyState, type BodyStore } from '../store/body-store';
 
 /**
  * Sleep by islands. Each step the awake dynamic bodies are grouped (union-find) through touching
@@ -70,10 +70,10 @@ export class Islands {
     bodies.sleepIsland[b] = island;
     bodies.islandNext[b] = this.islandHead[island];
     this.islandHead[island] = b;
-    const s = b * S.STRIDE;
-    bodies.state[s + S.VX] = 0;
-    bodies.state[s + S.VY] = 0;
-    bodies.state[s + S.W] = 0;
+    const s = b * BodyState.STRIDE;
+    bodies.state[s + BodyState.VX] = 0;
+    bodies.state[s + BodyState.VY] = 0;
+    bodies.state[s + BodyState.W] = 0;
     this.slept.push2(b, bodies.generation[b] | 0);
   }
 

@@ -2,7 +2,7 @@ import type { Softness } from './softness';
 
 /** @internal What every joint needs from the step: the body columns and the substep's constants. */
 export interface JointContext {
-  /** solver state, S.STRIDE doubles per body slot (velocities, step deltas) */
+  /** solver state, BodyState.STRIDE doubles per body slot (velocities, step deltas) */
   state: Float64Array;
   invMass: Float64Array;
   invInertia: Float64Array;

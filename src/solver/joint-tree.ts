@@ -1,5 +1,5 @@
 import { growF64, growI32, growU8 } from '../core/grow';
-import { BodyKind, S } from '../store/body-store';
+import { BodyKind, BodyState } from '../store/body-store';
 import { HingePaths } from './hinge-paths';
 import type { JointContext } from './joint-context';
 import { PointRows } from './point-rows';
@@ -876,21 +876,21 @@ export class JointTree implements TreeSolve {
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
       if (this.nodeKind[n] !== NodeKind.BODY) continue;
       const o = Block.ROWS * n;
-      const s = this.nodeBody[n] * S.STRIDE;
-      state[s + S.DPX] += scale * x[o];
-      state[s + S.DPY] += scale * x[o + 1];
+      const s = this.nodeBody[n] * BodyState.STRIDE;
+      state[s + BodyState.DPX] += scale * x[o];
+      state[s + BodyState.DPY] += scale * x[o + 1];
       // turn by the angle x[o + 2] (see integratePositions)
       const t = scale * x[o + 2];
       const t2 = t * t;
       const rc = 1 - t2 * (0.5 - t2 * (1 / 24 - t2 * (1 / 720 - t2 / 40320)));
       const rs = t * (1 - t2 * (1 / 6 - t2 * (1 / 120 - t2 * (1 / 5040 - t2 / 362880))));
-      const c = state[s + S.DQC];
-      const sn = state[s + S.DQS];
+      const c = state[s + BodyState.DQC];
+      const sn = state[s + BodyState.DQS];
       const nc = c * rc - sn * rs;
       const ns = sn * rc + c * rs;
       const inv = 1 / Math.sqrt(nc * nc + ns * ns);
-      state[s + S.DQC] = nc * inv;
-      state[s + S.DQS] = ns * inv;
+      state[s + BodyState.DQC] = nc * inv;
+      state[s + BodyState.DQS] = ns * inv;
     }
     return scale * turned;
   }
@@ -976,12 +976,12 @@ export class JointTree implements TreeSolve {
     const by = bx + 3 * MAX_CLOSURE_NODES;
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
       if (this.nodeKind[n] !== NodeKind.BODY) continue;
-      const s = this.nodeBody[n] * S.STRIDE;
+      const s = this.nodeBody[n] * BodyState.STRIDE;
       const ox = bx + 3 * n;
       const oy = by + 3 * n;
-      state[s + S.VX] += px * response[ox] + py * response[oy];
-      state[s + S.VY] += px * response[ox + 1] + py * response[oy + 1];
-      state[s + S.W] += px * response[ox + 2] + py * response[oy + 2];
+      state[s + BodyState.VX] += px * response[ox] + py * response[oy];
+      state[s + BodyState.VY] += px * response[ox + 1] + py * response[oy + 1];
+      state[s + BodyState.W] += px * response[ox + 2] + py * response[oy + 2];
     }
   }
 
@@ -1041,14 +1041,14 @@ export class JointTree implements TreeSolve {
     const limit = this.pushLimit;
     const pointRows = this.#pointRows;
     for (let j = 0; j < count; j++) {
-      const sa = this.slotA[j] * S.STRIDE;
-      const sb = this.slotB[j] * S.STRIDE;
-      const vAx = state[sa + S.VX];
-      const vAy = state[sa + S.VY];
-      const wA = state[sa + S.W];
-      const vBx = state[sb + S.VX];
-      const vBy = state[sb + S.VY];
-      const wB = state[sb + S.W];
+      const sa = this.slotA[j] * BodyState.STRIDE;
+      const sb = this.slotB[j] * BodyState.STRIDE;
+      const vAx = state[sa + BodyState.VX];
+      const vAy = state[sa + BodyState.VY];
+      const wA = state[sa + BodyState.W];
+      const vBx = state[sb + BodyState.VX];
+      const vBy = state[sb + BodyState.VY];
+      const wB = state[sb + BodyState.W];
       // three rows each: a joint with fewer has zero rows after its own (see SolverJoint.clearTreeRows)
       const o = Block.ROWS * this.rowNode[j] + this.rowOffset[j];
       const m = 9 * j;
@@ -1085,10 +1085,10 @@ export class JointTree implements TreeSolve {
     for (let n = 0, nodes = this.nodeCount; n < nodes; n++) {
       if (this.nodeKind[n] !== NodeKind.BODY) continue;
       const o = Block.ROWS * n;
-      const s = this.nodeBody[n] * S.STRIDE;
-      state[s + S.VX] += x[o];
-      state[s + S.VY] += x[o + 1];
-      state[s + S.W] += x[o + 2];
+      const s = this.nodeBody[n] * BodyState.STRIDE;
+      state[s + BodyState.VX] += x[o];
+      state[s + BodyState.VY] += x[o + 1];
+      state[s + BodyState.W] += x[o + 2];
     }
     for (let j = 0; j < count; j++) {
       const o = Block.ROWS * this.rowNode[j] + this.rowOffset[j];

@@ -1,4 +1,4 @@
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 
 /*
  * The point rows of a hinge: anchor B minus anchor A, along x and y, kept at zero. With the anchors
@@ -161,12 +161,12 @@ export class PointRows {
     px: number,
     py: number,
   ): void {
-    state[sa + S.VX] -= mA * px;
-    state[sa + S.VY] -= mA * py;
-    state[sa + S.W] -= iA * (rAx * py - rAy * px);
-    state[sb + S.VX] += mB * px;
-    state[sb + S.VY] += mB * py;
-    state[sb + S.W] += iB * (rBx * py - rBy * px);
+    state[sa + BodyState.VX] -= mA * px;
+    state[sa + BodyState.VY] -= mA * py;
+    state[sa + BodyState.W] -= iA * (rAx * py - rAy * px);
+    state[sb + BodyState.VX] += mB * px;
+    state[sb + BodyState.VY] += mB * py;
+    state[sb + BodyState.W] += iB * (rBx * py - rBy * px);
   }
 
   /**
@@ -189,12 +189,12 @@ export class PointRows {
     py: number,
     turn: number,
   ): void {
-    state[sa + S.VX] -= mA * px;
-    state[sa + S.VY] -= mA * py;
-    state[sa + S.W] -= iA * (rAx * py - rAy * px + turn);
-    state[sb + S.VX] += mB * px;
-    state[sb + S.VY] += mB * py;
-    state[sb + S.W] += iB * (rBx * py - rBy * px + turn);
+    state[sa + BodyState.VX] -= mA * px;
+    state[sa + BodyState.VY] -= mA * py;
+    state[sa + BodyState.W] -= iA * (rAx * py - rAy * px + turn);
+    state[sb + BodyState.VX] += mB * px;
+    state[sb + BodyState.VY] += mB * py;
+    state[sb + BodyState.W] += iB * (rBx * py - rBy * px + turn);
   }
 
   /**

@@ -1,5 +1,5 @@
 import { growF64, growI32 } from '../core/grow';
-import { S } from '../store/body-store';
+import { BodyState } from '../store/body-store';
 import type { JointContext } from './joint-context';
 import type { SolverJoint } from './solver-joint';
 
@@ -176,16 +176,16 @@ export class TreeAxials {
     const impulse = this.impulse;
     const coupling = this.coupling;
     for (let i = 0; i < n; i++) {
-      const sa = this.slotA[i] * S.STRIDE;
-      const sb = this.slotB[i] * S.STRIDE;
+      const sa = this.slotA[i] * BodyState.STRIDE;
+      const sb = this.slotB[i] * BodyState.STRIDE;
       const o = 6 * i;
       speed[i] =
-        jac[o] * state[sa + S.VX] +
-        jac[o + 1] * state[sa + S.VY] +
-        jac[o + 2] * state[sa + S.W] +
-        jac[o + 3] * state[sb + S.VX] +
-        jac[o + 4] * state[sb + S.VY] +
-        jac[o + 5] * state[sb + S.W];
+        jac[o] * state[sa + BodyState.VX] +
+        jac[o + 1] * state[sa + BodyState.VY] +
+        jac[o + 2] * state[sa + BodyState.W] +
+        jac[o + 3] * state[sb + BodyState.VX] +
+        jac[o + 4] * state[sb + BodyState.VY] +
+        jac[o + 5] * state[sb + BodyState.W];
       impulse[i] = 0;
     }
     for (let sweep = 0; sweep < MAX_SWEEPS; sweep++) {
@@ -206,17 +206,17 @@ export class TreeAxials {
       const p = impulse[i];
       if (p === 0) continue;
       moved = true;
-      const sa = this.slotA[i] * S.STRIDE;
-      const sb = this.slotB[i] * S.STRIDE;
+      const sa = this.slotA[i] * BodyState.STRIDE;
+      const sb = this.slotB[i] * BodyState.STRIDE;
       const a = this.slotA[i];
       const b = this.slotB[i];
       const o = 6 * i;
-      state[sa + S.VX] += ctx.invMass[a] * jac[o] * p;
-      state[sa + S.VY] += ctx.invMass[a] * jac[o + 1] * p;
-      state[sa + S.W] += ctx.invInertia[a] * jac[o + 2] * p;
-      state[sb + S.VX] += ctx.invMass[b] * jac[o + 3] * p;
-      state[sb + S.VY] += ctx.invMass[b] * jac[o + 4] * p;
-      state[sb + S.W] += ctx.invInertia[b] * jac[o + 5] * p;
+      state[sa + BodyState.VX] += ctx.invMass[a] * jac[o] * p;
+      state[sa + BodyState.VY] += ctx.invMass[a] * jac[o + 1] * p;
+      state[sa + BodyState.W] += ctx.invInertia[a] * jac[o + 2] * p;
+      state[sb + BodyState.VX] += ctx.invMass[b] * jac[o + 3] * p;
+      state[sb + BodyState.VY] += ctx.invMass[b] * jac[o + 4] * p;
+      state[sb + BodyState.W] += ctx.invInertia[b] * jac[o + 5] * p;
     }
     // the impulses moved their two bodies only: the tree carries them (P (v + M⁻¹ Jᵀ λ) = v + P M⁻¹ Jᵀ λ
     // for v on the tree's rows), and the tree's joints take their share of the load

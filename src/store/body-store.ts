@@ -25,7 +25,7 @@ export enum BodyFlag {
  * linear velocity, angular velocity, a pad, then the translation of the centre of mass and the
  * rotation (cos, sin) accumulated since the start of the step. Static bodies keep zeros and (1, 0).
  */
-export enum S {
+export enum BodyState {
   STRIDE = 8,
   VX = 0,
   VY = 1,
@@ -82,9 +82,9 @@ export class BodyStore extends SlotStore {
   protected resetSlot(slot: number): void {
     this.kind[slot] = BodyKind.STATIC;
     this.flags[slot] = 0;
-    const s = slot * S.STRIDE;
-    this.state.fill(0, s, s + S.STRIDE);
-    this.state[s + S.DQC] = 1;
+    const s = slot * BodyState.STRIDE;
+    this.state.fill(0, s, s + BodyState.STRIDE);
+    this.state[s + BodyState.DQC] = 1;
     this.px[slot] = 0;
     this.py[slot] = 0;
     this.qc[slot] = 1;
@@ -116,7 +116,7 @@ export class BodyStore extends SlotStore {
   protected growColumns(capacity: number): void {
     this.kind = growU8(this.kind, capacity);
     this.flags = growU8(this.flags, capacity);
-    this.state = growF64(this.state, capacity * S.STRIDE);
+    this.state = growF64(this.state, capacity * BodyState.STRIDE);
     this.px = growF64(this.px, capacity);
     this.py = growF64(this.py, capacity);
     this.qc = growF64(this.qc, capacity);

@@ -21,7 +21,7 @@ export enum ContactFlag {
  * manifoldTolerance of it, no point of the two shapes moved further than that relative to the other,
  * and the narrow phase keeps the manifold.
  */
-export enum MC {
+export enum ManifoldCache {
   TX = 0,
   TY = 1,
   RC = 2,
@@ -93,7 +93,7 @@ export class ContactStore extends SlotStore {
     this.maxNormalImpulse = growF64(this.maxNormalImpulse, capacity * 2);
     this.approachSpeed = growF64(this.approachSpeed, capacity * 2);
     this.separatingAxis = growU8(this.separatingAxis, capacity);
-    this.manifoldCache = growF64(this.manifoldCache, capacity * MC.STRIDE);
+    this.manifoldCache = growF64(this.manifoldCache, capacity * ManifoldCache.STRIDE);
   }
 
   protected resetSlot(slot: number): void {

@@ -12,7 +12,7 @@ import {
   integratePositions,
   integrateVelocities,
   prepareVelocityUpdate,
-  V,
+  VelocityUpdate,
 } from '../solver/body-solver';
 import {
   applyRestitution,
@@ -31,7 +31,7 @@ import { MAX_FINE_FACTOR } from '../solver/fine-islands';
 import type { GraphColoring } from '../solver/graph-color';
 import { makeSoftness } from '../solver/softness';
 import type { SolverJoint } from '../solver/solver-joint';
-import { BodyFlag, BodyKind, type BodyStore, S } from '../store/body-store';
+import { BodyFlag, BodyKind, BodyState, type BodyStore } from '../store/body-store';
 import { ContactFlag, type ContactStore } from '../store/contact-store';
 import { ShapeFlag } from '../store/shape-store';
 import { deferBullet, solveBullets, solveContinuous } from './continuous';
@@ -241,8 +241,8 @@ export function solve(core: WorldCore, dt: number): void {
   const settings = core.settings;
   // the tree projects again after the others only if they act on its bodies
   const coupled = tree.isCoupled(cc.ids, cc.count);
-  if (core.velocityUpdate.length < awakeCount * V.STRIDE)
-    core.velocityUpdate = growF64(core.velocityUpdate, 2 * awakeCount * V.STRIDE);
+  if (core.velocityUpdate.length < awakeCount * VelocityUpdate.STRIDE)
+    core.velocityUpdate = growF64(core.velocityUpdate, 2 * awakeCount * VelocityUpdate.STRIDE);
   const update = core.velocityUpdate;
   prepareVelocityUpdate(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, update);
   for (let i = 0; i < subSteps; i++) {
@@ -334,7 +334,7 @@ function clampAwakeVelocities(
   const state = bodies.state;
   for (let i = 0; i < count; i++) {
     const b = awake[i];
-    if (bodies.kind[b] === BodyKind.DYNAMIC) clampVelocity(state, b * S.STRIDE, maxSpeed, maxW);
+    if (bodies.kind[b] === BodyKind.DYNAMIC) clampVelocity(state, b * BodyState.STRIDE, maxSpeed, maxW);
   }
 }
 
@@ -385,9 +385,9 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
   const proxyKey = shapes.proxyKey;
   for (let i = 0, n = core.awakeCount & IndexBound.MAX; i < n; i++) {
     const b = awake[i] & IndexBound.MAX;
-    const s = b * S.STRIDE;
-    const dqc = state[s + S.DQC];
-    const dqs = state[s + S.DQS];
+    const s = b * BodyState.STRIDE;
+    const dqc = state[s + BodyState.DQC];
+    const dqs = state[s + BodyState.DQS];
     const q0c = colQc[b];
     const q0s = colQs[b];
     let qc = dqc * q0c - dqs * q0s;
@@ -398,8 +398,8 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     const inv = 0.5 * (3 - (qc * qc + qs * qs));
     qc *= inv;
     qs *= inv;
-    const dpx = state[s + S.DPX];
-    const dpy = state[s + S.DPY];
+    const dpx = state[s + BodyState.DPX];
+    const dpy = state[s + BodyState.DPY];
     const cx = colCx[b] + dpx;
     const cy = colCy[b] + dpy;
     const lx = colLcx[b];
@@ -412,17 +412,17 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
     colPy[b] = cy - (qs * lx + qc * ly);
     const c0x = cx - dpx;
     const c0y = cy - dpy;
-    state[s + S.DPX] = 0;
-    state[s + S.DPY] = 0;
-    state[s + S.DQC] = 1;
-    state[s + S.DQS] = 0;
+    state[s + BodyState.DPX] = 0;
+    state[s + BodyState.DPY] = 0;
+    state[s + BodyState.DQC] = 1;
+    state[s + BodyState.DQS] = 0;
     colFx[b] = 0;
     colFy[b] = 0;
     colTorque[b] = 0;
 
-    const vx = state[s + S.VX];
-    const vy = state[s + S.VY];
-    const w = state[s + S.W];
+    const vx = state[s + BodyState.VX];
+    const vy = state[s + BodyState.VY];
+    const w = state[s + BodyState.W];
     if (colKind[b] === BodyKind.KINEMATIC && (vx !== 0 || vy !== 0 || w !== 0)) {
       // a kinematic body moves as told for as long as it is told: even slowly, even with no shape
       colSleepTime[b] = 0;

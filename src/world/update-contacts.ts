@@ -3,7 +3,7 @@ import { Pack } from '../geometry/packed';
 import { collidePacked } from '../narrow-phase/manifold';
 import { referenceOwnerOfId, VERTEX_PAIR_MIN_GAP } from '../narrow-phase/manifold-polygon';
 import { BodyFlag } from '../store/body-store';
-import { ContactFlag, MC } from '../store/contact-store';
+import { ContactFlag, ManifoldCache } from '../store/contact-store';
 import { WarningCode } from '../store/event-buffers';
 import { WarningRearm } from './contact-limit';
 import type { WorldCore } from './world-core';
@@ -170,28 +170,30 @@ export function updateContacts(core: WorldCore): void {
       const ty = fc * dy - fs * dx;
       const rc = ac * bc + as * bs;
       const rs = ac * bs - as * bc;
-      const o = c * MC.STRIDE;
+      const o = c * ManifoldCache.STRIDE;
       if ((flags & ContactFlag.CACHED) !== 0) {
         // how far any point of that shape moved, relative to the other, since the manifold was
         // computed: at most the translation plus its extent times the rotation's change
         const moved =
-          Math.abs(tx - cache[o + MC.TX]) +
-          Math.abs(ty - cache[o + MC.TY]) +
-          (fromA ? extentB : extentA) * (Math.abs(rc - cache[o + MC.RC]) + Math.abs(rs - cache[o + MC.RS]));
+          Math.abs(tx - cache[o + ManifoldCache.TX]) +
+          Math.abs(ty - cache[o + ManifoldCache.TY]) +
+          (fromA ? extentB : extentA) *
+            (Math.abs(rc - cache[o + ManifoldCache.RC]) + Math.abs(rs - cache[o + ManifoldCache.RS]));
         // shapes found apart stay apart (the manifold empty) while they came closer by less than
         // their distance then, less the reach (the vertex-pair tolerance as for `gap` above)
-        if (pointCount[c] === 0 && moved < cache[o + MC.GAP] - reach - VERTEX_PAIR_MIN_GAP) continue;
+        if (pointCount[c] === 0 && moved < cache[o + ManifoldCache.GAP] - reach - VERTEX_PAIR_MIN_GAP)
+          continue;
         if (moved < tolerance && pointCount[c] > 0) {
           // the manifold holds: carried along with body A, separations and impulses kept
           const count = pointCount[c];
           if (!sensor && count > 0) {
-            const lnx = cache[o + MC.NX];
-            const lny = cache[o + MC.NY];
+            const lnx = cache[o + ManifoldCache.NX];
+            const lny = cache[o + ManifoldCache.NY];
             normalX[c] = ac * lnx - as * lny;
             normalY[c] = as * lnx + ac * lny;
             for (let j = 0; j < count; j++) {
-              const lx = cache[o + MC.X0 + 2 * j];
-              const ly = cache[o + MC.Y0 + 2 * j];
+              const lx = cache[o + ManifoldCache.X0 + 2 * j];
+              const ly = cache[o + ManifoldCache.Y0 + 2 * j];
               pointX[k0 + j] = ax + ac * lx - as * ly;
               pointY[k0 + j] = ay + as * lx + ac * ly;
             }
@@ -217,23 +219,23 @@ export function updateContacts(core: WorldCore): void {
       );
       separatingAxis[c] = context.separatingAxis;
       // keep the manifold in A's frame with the pose it holds for
-      cache[o + MC.TX] = tx;
-      cache[o + MC.TY] = ty;
-      cache[o + MC.RC] = rc;
-      cache[o + MC.RS] = rs;
+      cache[o + ManifoldCache.TX] = tx;
+      cache[o + ManifoldCache.TY] = ty;
+      cache[o + ManifoldCache.RC] = rc;
+      cache[o + ManifoldCache.RS] = rs;
       // collide leaves the normal of a manifold without points as it was, the last one computed:
       // 0 keeps the snapshot free of it (it is never read)
       const nx = manifold.pointCount > 0 ? manifold.normalX : 0;
       const ny = manifold.pointCount > 0 ? manifold.normalY : 0;
-      cache[o + MC.NX] = ac * nx + as * ny;
-      cache[o + MC.NY] = ac * ny - as * nx;
+      cache[o + ManifoldCache.NX] = ac * nx + as * ny;
+      cache[o + ManifoldCache.NY] = ac * ny - as * nx;
       for (let j = 0; j < manifold.pointCount; j++) {
         const px = points[j].x - ax;
         const py = points[j].y - ay;
-        cache[o + MC.X0 + 2 * j] = ac * px + as * py;
-        cache[o + MC.Y0 + 2 * j] = ac * py - as * px;
+        cache[o + ManifoldCache.X0 + 2 * j] = ac * px + as * py;
+        cache[o + ManifoldCache.Y0 + 2 * j] = ac * py - as * px;
       }
-      if (manifold.pointCount === 0) cache[o + MC.GAP] = context.separatedDistance;
+      if (manifold.pointCount === 0) cache[o + ManifoldCache.GAP] = context.separatedDistance;
       flags |= ContactFlag.CACHED;
     }
     contactFlags[c] = flags;

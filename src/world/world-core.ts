@@ -20,7 +20,7 @@ import { CollideContext } from '../narrow-phase/collide-context';
 import { ContactConstraints } from '../solver/contact-solver';
 import { FineIslands } from '../solver/fine-islands';
 import { GraphColoring } from '../solver/graph-color';
-import { Anchor, H, HingeBatch } from '../solver/hinge-batch';
+import { Anchor, HingeBatch, HingeField } from '../solver/hinge-batch';
 import { Islands } from '../solver/island';
 import type { JointContext } from '../solver/joint-context';
 import { JointTree } from '../solver/joint-tree';
@@ -71,7 +71,7 @@ export class WorkingMemory {
    * A joint's step data as Joint.prepareBase works it out: a hinge record (H layout, see HingeBatch),
    * its anchors (Anchor layout) and its bodies' slots.
    */
-  readonly jointRecord = new Float64Array(H.STRIDE);
+  readonly jointRecord = new Float64Array(HingeField.STRIDE);
   readonly jointAnchors = new Float64Array(Anchor.STRIDE);
   readonly jointIds = new Int32Array(2);
   /** The joints' point rows' maths (an object holding no state: see PointRows). */

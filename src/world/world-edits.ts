@@ -1,6 +1,6 @@
 import { FulcrumError } from '../core/errors';
 import { type Geometry, ShapeKind } from '../geometry/types';
-import { BodyFlag, BodyKind, S } from '../store/body-store';
+import { BodyFlag, BodyKind, BodyState } from '../store/body-store';
 import { ContactFlag } from '../store/contact-store';
 import type { WorldCore } from './world-core';
 
@@ -36,10 +36,10 @@ export function changeBodyKind(core: WorldCore, b: number, kind: BodyKind, type:
   bodies.awakeEpoch++;
   if (kind === BodyKind.STATIC) {
     bodies.flags[b] &= ~BodyFlag.AWAKE;
-    const st = b * S.STRIDE;
-    bodies.state[st + S.VX] = 0;
-    bodies.state[st + S.VY] = 0;
-    bodies.state[st + S.W] = 0;
+    const st = b * BodyState.STRIDE;
+    bodies.state[st + BodyState.VX] = 0;
+    bodies.state[st + BodyState.VY] = 0;
+    bodies.state[st + BodyState.W] = 0;
   } else {
     bodies.flags[b] |= BodyFlag.AWAKE;
     bodies.sleepTime[b] = 0;

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { createRandom } from '../../scenes/random';
 import { type Body, type Joint, Shape, World } from '../../src/index';
-import { H } from '../../src/solver/hinge-batch';
-import { P } from '../../src/solver/hinge-paths';
+import { HingeField } from '../../src/solver/hinge-batch';
+import { PathField } from '../../src/solver/hinge-paths';
 import { momentum } from '../helpers/world';
 
 // Chains and ropes of free hinges (no limit, motor or spring; each body on at most two) are solved
@@ -55,7 +55,7 @@ function hangingChain(world: World, top: Body, x: number, y: number, count: numb
 describe('paths of free hinges', () => {
   it("lays a path hinge's record out as the hinge batch's, then its own fields", () => {
     // HingePaths hands its records to writeStepData and turnStepData, which write H's fields
-    expect(P.EX).toBe(H.STRIDE);
+    expect(PathField.EX).toBe(HingeField.STRIDE);
   });
 
   it('chains hung in any order and sense: each hinge carries the weight below it, joints exact', () => {

@@ -7,7 +7,7 @@ import { Shape, World } from '../../src/index';
 import { CollideContext } from '../../src/narrow-phase/collide-context';
 import { collidePacked } from '../../src/narrow-phase/manifold';
 import { referenceOwnerOfId } from '../../src/narrow-phase/manifold-polygon';
-import { ContactFlag, MC } from '../../src/store/contact-store';
+import { ContactFlag, ManifoldCache } from '../../src/store/contact-store';
 import { groundWorld, pyramid } from '../helpers/world';
 
 const fresh = makeManifold();
@@ -58,14 +58,14 @@ function compare(world: World, poses: Poses, out: Deviation): void {
     if (!empty) out.touching++;
     const a = contacts.bodyA[c];
     const b = contacts.bodyB[c];
-    const o = c * MC.STRIDE;
+    const o = c * ManifoldCache.STRIDE;
     const fromA = shapes.originExtent[contacts.shapeB[c]] <= shapes.originExtent[contacts.shapeA[c]];
     const [f, g] = fromA ? [a, b] : [b, a];
     const dx = poses.px[g] - poses.px[f];
     const dy = poses.py[g] - poses.py[f];
     const tx = poses.qc[f] * dx + poses.qs[f] * dy;
     const ty = poses.qc[f] * dy - poses.qs[f] * dx;
-    if (tx === cache[o + MC.TX] && ty === cache[o + MC.TY]) continue;
+    if (tx === cache[o + ManifoldCache.TX] && ty === cache[o + ManifoldCache.TY]) continue;
     if (empty) out.keptEmpty++;
     else out.kept++;
     const sa = contacts.shapeA[c];

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { PointRows } from '../../../src/solver/point-rows';
-import { S } from '../../../src/store/body-store';
+import { BodyState } from '../../../src/store/body-store';
 
 /*
  * The point rows' maths against their definition: J written out from the constraint C = (cB + rB) -
@@ -141,10 +141,17 @@ describe('the point rows', () => {
 
   it('apply Δv = M⁻¹ Jᵀ p, and an angular impulse on B relative to A', () => {
     const next = sequence(11);
-    const state = new Float64Array(2 * S.STRIDE);
+    const state = new Float64Array(2 * BodyState.STRIDE);
     const sa = 0;
-    const sb = S.STRIDE;
-    const slots = [sa + S.VX, sa + S.VY, sa + S.W, sb + S.VX, sb + S.VY, sb + S.W];
+    const sb = BodyState.STRIDE;
+    const slots = [
+      sa + BodyState.VX,
+      sa + BodyState.VY,
+      sa + BodyState.W,
+      sb + BodyState.VX,
+      sb + BodyState.VY,
+      sb + BodyState.W,
+    ];
     const read = (): number[] => slots.map((i) => state[i]);
     for (const h of all) {
       const px = next() * 3;
