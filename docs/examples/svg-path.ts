@@ -15,11 +15,10 @@ console.log(terrain.closed, terrain.points.length, crate.closed, crate.points);
 
 const world = new World();
 
-// An open outline is a terrain: here one segment per chord, on a static body.
+// An open outline is a terrain: a chain, smooth over the seams between its chords. A chain faces
+// right of the way its points run, and this one was drawn left to right: reversed, it faces up.
 const ground = world.createBody();
-for (let i = 0; i + 1 < terrain.points.length; i++) {
-  ground.createShape(Shape.segment(terrain.points[i], terrain.points[i + 1]));
-}
+ground.createShape(Shape.chain([...terrain.points].reverse()));
 
 // A closed convex outline of up to 8 points is a polygon.
 const box = world.createBody({ type: 'dynamic', position: { x: 4, y: -1 } });

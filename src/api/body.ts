@@ -9,7 +9,7 @@ import {
   Limits,
 } from '../core/limits';
 import { localScale, scaleGeometry } from '../geometry/scale-geometry';
-import type { Concave, Geometry } from '../geometry/types';
+import type { Chain, Concave, Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
 import { makeRotInto, rotAngle } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
@@ -474,13 +474,14 @@ export class Body {
   /**
    * Attaches a shape made by `Shape.*` with the options `def` and returns its handle. A concave shape
    * (`Shape.concave`) attaches each of its convex pieces with `def`, as shapes of this body that never
-   * collide with one another, and returns their handles in the order of `concave.pieces`. Everything is
-   * checked first: a call that throws leaves the world as it was.
+   * collide with one another, and returns their handles in the order of `concave.pieces`; a chain
+   * (`Shape.chain`, static and kinematic bodies only) likewise its segments, in the order of
+   * `chain.segments`. Everything is checked first: a call that throws leaves the world as it was.
    */
-  createShape(geometry: Concave, def?: ShapeDef): ShapeHandle[];
+  createShape(geometry: Concave | Chain, def?: ShapeDef): ShapeHandle[];
   createShape(geometry: Geometry, def?: ShapeDef): ShapeHandle;
-  createShape(geometry: Geometry | Concave, def?: ShapeDef): ShapeHandle | ShapeHandle[];
-  createShape(geometry: Geometry | Concave, def?: ShapeDef): ShapeHandle | ShapeHandle[] {
+  createShape(geometry: Geometry | Concave | Chain, def?: ShapeDef): ShapeHandle | ShapeHandle[];
+  createShape(geometry: Geometry | Concave | Chain, def?: ShapeDef): ShapeHandle | ShapeHandle[] {
     this.unlocked();
     return attachShapes(this.handles, this, geometry, def);
   }

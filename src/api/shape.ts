@@ -2,7 +2,16 @@ import { checkBoolean, checkKnownKeys, FulcrumError, fail } from '../core/errors
 import { checkRoom } from '../core/index-bound';
 import { checkCoordinates, checkDensity, checkNonNegativeRate } from '../core/limits';
 import { rayCastGeometry, testPoint } from '../geometry/raycast';
-import { type Concave, type Geometry, isConcave, isGeometry, makeRayHit, ShapeKind } from '../geometry/types';
+import {
+  type Chain,
+  type Concave,
+  type Geometry,
+  isChain,
+  isConcave,
+  isGeometry,
+  makeRayHit,
+  ShapeKind,
+} from '../geometry/types';
 import type { AABB } from '../math/aabb';
 import { makeTransform, type Vec2 } from '../math/vec2';
 import { BodyKind } from '../store/body-store';
@@ -319,6 +328,8 @@ export function checkGeometryFor(
   }
 }
 
+const MAKERS = 'Shape.circle/box/polygon/capsule/segment/concave/chain';
+
 /**
  * @internal Body.createShape: validates everything, then adds the shape (or a concave shape's pieces,
  * in order) to the body's list and the broad phase.
@@ -326,20 +337,24 @@ export function checkGeometryFor(
 export function attachShapes(
   handles: WorldHandles,
   body: Body,
-  geometry: Geometry | Concave,
+  geometry: Geometry | Concave | Chain,
   def: ShapeDef | undefined,
 ): ShapeHandle | ShapeHandle[] {
   const b = body.check();
   const core = handles.core;
-  if (isConcave(geometry)) {
+  const parts = isConcave(geometry) ? geometry.pieces : isChain(geometry) ? geometry.segments : null;
+  if (parts !== null) {
+    if (isChain(geometry) && core.bodies.kind[b] === BodyKind.DYNAMIC) {
+      throw new FulcrumError('geometry: a chain can only be attached to a static or kinematic body');
+    }
     const d = resolveShapeDef(def);
-    checkRoom('shapes', core.shapes.liveCount + geometry.pieces.length - 1);
-    const pieces = geometry.pieces.map((piece) => addShape(handles, body, b, piece, d));
+    checkRoom('shapes', core.shapes.liveCount + parts.length - 1);
+    const shapes = parts.map((part) => addShape(handles, body, b, part, d));
     core.updateMass(b);
     core.wake(b);
-    return pieces;
+    return shapes;
   }
-  checkGeometryFor(core.bodies.kind[b], geometry, 'Shape.circle/box/polygon/capsule/segment/concave');
+  checkGeometryFor(core.bodies.kind[b], geometry, MAKERS);
   const d = resolveShapeDef(def);
   checkRoom('shapes', core.shapes.liveCount);
   const shape = addShape(handles, body, b, geometry, d);

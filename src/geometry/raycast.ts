@@ -9,6 +9,8 @@ import { type Geometry, type Polygon, type RayHit, ShapeKind } from './types';
  * - A tangent (grazing) ray counts as a hit, at the touching point.
  * - Segments are two-sided: the normal faces the ray's origin. A ray along a segment's line hits
  *   its nearer end (or fraction 0 when the origin is on it), with the normal against the ray.
+ * - A chain's one-sided segment is hit only by a ray from strictly in front of its line, as shapes
+ *   behind it pass through it.
  * The cast runs in the shape's local frame; fraction and point come from the world ray. The casts
  * below keep the best hit so far in the caller's RayHit (fraction and normal, in the local frame);
  * rayCastGeometry turns it to the world frame. They write it only with a hit, so a miss leaves it as
@@ -217,6 +219,11 @@ function castSegment(a: Vec2, b: Vec2, ox: number, oy: number, dx: number, dy: n
   return true;
 }
 
+/** Whether (x, y) is strictly in front of the one-sided segment a-b: right of the way from a to b. */
+function isInFront(a: Vec2, b: Vec2, x: number, y: number): boolean {
+  return (x - a.x) * (b.y - a.y) - (y - a.y) * (b.x - a.x) > 0;
+}
+
 /**
  * Casts the world ray origin + f * translation (f in [0, 1]) against `g` placed at `xf`. On a hit,
  * writes the fraction, world point and outward world unit normal into `out` and returns true.
@@ -251,7 +258,9 @@ export function rayCastGeometry(
     found =
       g.radius > 0 ? castRoundedPolygon(g, ox, oy, dx, dy, out) : castSharpPolygon(g, ox, oy, dx, dy, out);
   } else {
-    found = castSegment(g.point1, g.point2, ox, oy, dx, dy, out);
+    found =
+      (!g.oneSided || isInFront(g.point1, g.point2, ox, oy)) &&
+      castSegment(g.point1, g.point2, ox, oy, dx, dy, out);
   }
   if (!found) return false;
   const fraction = out.fraction;

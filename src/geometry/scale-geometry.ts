@@ -1,7 +1,7 @@
 import { FulcrumError } from '../core/errors';
 import type { Vec2 } from '../math/vec2';
-import { Shape } from './shapes';
-import type { Geometry } from './types';
+import { makeChainSegment, Shape } from './shapes';
+import type { Geometry, Segment } from './types';
 
 /**
  * A linear map of a body's local frame, [[m00, m01], [m10, m11]], and whether it is a uniform scale
@@ -38,6 +38,19 @@ function map(m: LocalScale, p: Vec2): Vec2 {
 }
 
 /**
+ * A chain's segment under `m`, checked like Shape.segment. A mirroring map (negative determinant)
+ * also reverses the segment, so that its front stays on the side the map carried it to.
+ */
+function scaleChainSegment(g: Segment, m: LocalScale): Segment {
+  const mirror = m.m00 * m.m11 - m.m01 * m.m10 < 0;
+  const p1 = map(m, mirror ? g.point2 : g.point1);
+  const p2 = map(m, mirror ? g.point1 : g.point2);
+  const g1 = mirror ? g.ghost2 : g.ghost1;
+  const g2 = mirror ? g.ghost1 : g.ghost2;
+  return makeChainSegment(p1, p2, g1 === null ? null : map(m, g1), g2 === null ? null : map(m, g2));
+}
+
+/**
  * The geometry `g` under the local map `m`, built and validated by the Shape factories. Throws a
  * FulcrumError naming `argument` when the map cannot apply: a circle, a capsule or a rounded polygon
  * under a map that is not a uniform scale, or a shape the map flattens below the engine's sizes.
@@ -57,7 +70,7 @@ export function scaleGeometry(g: Geometry, m: LocalScale, argument: string): Geo
       case 'capsule':
         return Shape.capsule(map(m, g.center1), map(m, g.center2), g.radius * uniform);
       case 'segment':
-        return Shape.segment(map(m, g.point1), map(m, g.point2));
+        return g.oneSided ? scaleChainSegment(g, m) : Shape.segment(map(m, g.point1), map(m, g.point2));
       case 'polygon':
         return Shape.polygon(
           g.vertices.map((v) => map(m, v)),

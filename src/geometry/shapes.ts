@@ -5,7 +5,16 @@ import type { Vec2 } from '../math/vec2';
 import { LINEAR_SLOP } from './constants';
 import { decomposeOutline } from './decompose';
 import { computeHull } from './hull';
-import { type Capsule, type Circle, type Concave, type Polygon, type Segment, ShapeKind } from './types';
+import {
+  type Capsule,
+  type Chain,
+  type Circle,
+  type Concave,
+  MAX_CHAIN_POINTS,
+  type Polygon,
+  type Segment,
+  ShapeKind,
+} from './types';
 
 function frozenPoint(x: number, y: number): Vec2 {
   return Object.freeze({ x, y });
@@ -71,6 +80,34 @@ function checkApart(p1: Vec2, p2: Vec2, value: unknown): void {
   if (dx * dx + dy * dy < LINEAR_SLOP * LINEAR_SLOP) {
     fail('p2', value, `at least ${LINEAR_SLOP} m away from p1 (${p1.x}, ${p1.y})`);
   }
+}
+
+/**
+ * One frozen segment of a chain: point1 to point2 (checked like Shape.segment's ends), with the
+ * neighbours before and after it (null at an open end).
+ */
+export function makeChainSegment(
+  point1: Vec2,
+  point2: Vec2,
+  ghost1: Vec2 | null,
+  ghost2: Vec2 | null,
+): Segment {
+  const a = checkCoordinates('p1', point1);
+  const b = checkCoordinates('p2', point2);
+  checkApart(a, b, point2);
+  const g1 = ghost1 === null ? null : checkCoordinates('ghost1', ghost1);
+  const g2 = ghost2 === null ? null : checkCoordinates('ghost2', ghost2);
+  if (g1 !== null) checkApart(g1, a, point1);
+  if (g2 !== null) checkApart(b, g2, ghost2);
+  return Object.freeze({
+    type: 'segment',
+    kind: ShapeKind.SEGMENT,
+    point1: Object.freeze(a),
+    point2: Object.freeze(b),
+    oneSided: true,
+    ghost1: g1 === null ? null : Object.freeze(g1),
+    ghost2: g2 === null ? null : Object.freeze(g2),
+  });
 }
 
 /** Factories of immutable geometry in a body's local frame. Every argument is validated. */
@@ -163,6 +200,62 @@ export const Shape = Object.freeze({
       kind: ShapeKind.SEGMENT,
       point1: Object.freeze(a),
       point2: Object.freeze(b),
+      oneSided: false,
+      ghost1: null,
+      ghost2: null,
+    });
+  },
+
+  /**
+   * A chain of one-sided segments through `points` (2 to 65,536 of them, 3 or more for a loop, each
+   * at least 0.005 m from the one before), closed from the last point back to the first when `loop`
+   * is true. The segments face right of the way the points run (a counter-clockwise loop is solid
+   * inside, like a polygon; ground drawn right to left, y up, is walked on from above), shapes on
+   * their back side pass through them (one-way platforms), and bodies slide and roll over the seams
+   * between them as over one surface. `body.createShape(chain, def)` attaches one shape per segment
+   * to a static or kinematic body and returns their handles.
+   */
+  chain(points: readonly Vec2[], options?: { loop?: boolean }): Chain {
+    if (options !== undefined && (typeof options !== 'object' || options === null)) {
+      fail('options', options, 'an object { loop?: boolean } or undefined');
+    }
+    const loop = options?.loop ?? false;
+    if (typeof loop !== 'boolean') fail('options.loop', loop, 'a boolean');
+    const least = loop ? 3 : 2;
+    if (!Array.isArray(points) || points.length < least || points.length > MAX_CHAIN_POINTS) {
+      fail(
+        'points',
+        points,
+        `an array of ${least} to ${MAX_CHAIN_POINTS} vectors { x, y }${loop ? ' (a loop)' : ''}`,
+      );
+    }
+    const p = checkPoints(points).map((v) => frozenPoint(v.x, v.y));
+    const n = p.length;
+    const links = loop ? n : n - 1;
+    for (let i = 0; i < links; i++) {
+      const a = p[i];
+      const b = p[(i + 1) % n];
+      const dx = b.x - a.x;
+      const dy = b.y - a.y;
+      if (dx * dx + dy * dy < LINEAR_SLOP * LINEAR_SLOP) {
+        fail(
+          `points[${(i + 1) % n}]`,
+          b,
+          `at least ${LINEAR_SLOP} m away from points[${i}] (${a.x}, ${a.y})`,
+        );
+      }
+    }
+    const segments: Segment[] = [];
+    for (let i = 0; i < links; i++) {
+      const before = loop || i > 0 ? p[(i - 1 + n) % n] : null;
+      const after = loop || i + 2 < n ? p[(i + 2) % n] : null;
+      segments.push(makeChainSegment(p[i], p[(i + 1) % n], before, after));
+    }
+    return Object.freeze({
+      type: 'chain',
+      points: Object.freeze(p),
+      loop,
+      segments: Object.freeze(segments),
     });
   },
 });

@@ -1,5 +1,6 @@
 import { Limits } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
+import { LINEAR_SLOP } from './constants';
 
 /** Largest vertex count of a convex polygon. */
 export const MAX_POLYGON_VERTICES = 8;
@@ -10,6 +11,9 @@ export const MAX_POLYGON_VERTICES = 8;
  * for a 1024-point star of 512 spikes).
  */
 export const MAX_OUTLINE_POINTS = 1024;
+
+/** The most points of a chain (`Shape.chain`): a chain is one shape per link. */
+export const MAX_CHAIN_POINTS = 65536;
 
 /** Numeric shape kinds, used for dispatch inside the engine. The public API shows the string `type`. */
 export enum ShapeKind {
@@ -35,12 +39,21 @@ export interface Capsule {
   readonly radius: number;
 }
 
-/** A two-sided segment with no thickness; only on static or kinematic bodies. */
+/**
+ * A segment with no thickness; only on static or kinematic bodies. `Shape.segment` makes it
+ * two-sided. The segments of a chain (`Shape.chain`) are one-sided: they collide only with shapes
+ * whose centre is on their front side, to the right of the way from point1 to point2, and they know
+ * their neighbours (`ghost1` before point1, `ghost2` after point2, null at an open chain's ends) so
+ * that a body sliding or rolling over the seam between two of them meets one surface.
+ */
 export interface Segment {
   readonly type: 'segment';
   readonly kind: ShapeKind.SEGMENT;
   readonly point1: Vec2;
   readonly point2: Vec2;
+  readonly oneSided: boolean;
+  readonly ghost1: Vec2 | null;
+  readonly ghost2: Vec2 | null;
 }
 
 /**
@@ -72,6 +85,20 @@ export interface Concave {
   readonly outline: readonly Vec2[];
   /** convex pieces, each with 3 to MAX_POLYGON_VERTICES vertices, all of them points of `outline` */
   readonly pieces: readonly Polygon[];
+}
+
+/**
+ * A chain of one-sided segments through `points` (`Shape.chain`), closed into a loop or open. It is
+ * not a `Geometry`: a static or kinematic body takes it whole, `body.createShape(chain, def)` making
+ * one shape per segment (all with `def`) and returning their handles in order. The segments face
+ * right of the way the points run: a counter-clockwise loop is solid inside, like a polygon, and
+ * ground drawn from right to left (y up) is collided from above.
+ */
+export interface Chain {
+  readonly type: 'chain';
+  readonly points: readonly Vec2[];
+  readonly loop: boolean;
+  readonly segments: readonly Segment[];
 }
 
 /** Mass properties of one shape: inertia is about the shape's own centre of mass. */
@@ -150,6 +177,13 @@ function isFinitePoint(p: unknown): boolean {
   );
 }
 
+/** Points at least LINEAR_SLOP apart, as Shape.segment and Shape.chain require of a segment's ends. */
+function areApart(a: Vec2, b: Vec2): boolean {
+  const dx = b.x - a.x;
+  const dy = b.y - a.y;
+  return dx * dx + dy * dy >= LINEAR_SLOP * LINEAR_SLOP;
+}
+
 function isPointList(list: unknown, count: number): boolean {
   return Array.isArray(list) && list.length === count && list.every(isFinitePoint);
 }
@@ -189,6 +223,28 @@ export function isConcave(value: unknown): value is Concave {
 }
 
 /**
+ * True for a chain as `Shape.chain` builds it: frozen, with a frozen list of points and a frozen list of
+ * one-sided segments that each pass isGeometry, as many as the chain has links.
+ */
+export function isChain(value: unknown): value is Chain {
+  if (typeof value !== 'object' || value === null || !Object.isFrozen(value)) return false;
+  const g = value as Record<string, unknown>;
+  const points = g.points;
+  const segments = g.segments;
+  if (g.type !== 'chain' || typeof g.loop !== 'boolean' || !Array.isArray(points) || !Array.isArray(segments))
+    return false;
+  const links = g.loop ? points.length : points.length - 1;
+  return (
+    Object.isFrozen(points) &&
+    Object.isFrozen(segments) &&
+    points.length >= (g.loop ? 3 : 2) &&
+    points.length <= MAX_CHAIN_POINTS &&
+    segments.length === links &&
+    segments.every((segment) => isGeometry(segment) && segment.kind === ShapeKind.SEGMENT && segment.oneSided)
+  );
+}
+
+/**
  * True for geometry as `Shape.*` builds it: frozen, with a matching type and kind, coordinates and
  * sizes in the ranges Shape accepts (core/limits.ts), unit normals and at most MAX_POLYGON_VERTICES
  * vertices. The shape store packs it into a fixed-size record, so a
@@ -204,7 +260,16 @@ export function isGeometry(value: unknown): value is Geometry {
     case ShapeKind.CAPSULE:
       return isFinitePoint(g.center1) && isFinitePoint(g.center2) && isLength(g.radius, Limits.MIN_SIZE);
     case ShapeKind.SEGMENT:
-      return isFinitePoint(g.point1) && isFinitePoint(g.point2);
+      return (
+        isFinitePoint(g.point1) &&
+        isFinitePoint(g.point2) &&
+        areApart(g.point1 as Vec2, g.point2 as Vec2) &&
+        typeof g.oneSided === 'boolean' &&
+        (g.ghost1 === null ||
+          (g.oneSided === true && isFinitePoint(g.ghost1) && areApart(g.ghost1 as Vec2, g.point1 as Vec2))) &&
+        (g.ghost2 === null ||
+          (g.oneSided === true && isFinitePoint(g.ghost2) && areApart(g.point2 as Vec2, g.ghost2 as Vec2)))
+      );
     default: {
       const count = g.count;
       return (

@@ -62,14 +62,14 @@ export class CollideContext {
   readonly separation = new Float64Array(1);
   /** B's transform relative to A: cos, sin, x, y. */
   readonly relative = new Float64Array(4);
-  /** A polygon manifold in A's frame (layout L in manifold-polygon.ts) and its point ids. */
+  /** A polygon manifold in A's frame (layout LocalManifold in manifold-polygon.ts) and its point ids. */
   readonly local = new Float64Array(2 + 3 * 2);
   readonly localIds = new Int32Array(2);
-  /** The faces chosen by the polygon SAT (layout F in manifold-polygon.ts). */
+  /** The faces chosen by the polygon SAT (layout FaceInput in manifold-polygon.ts). */
   readonly faces = new Float64Array(13);
   /** Whether the polygon manifold in `local` took its reference face from B. */
   referenceFlip = false;
-  /** A capsule point (layout K in manifold-capsule.ts). */
+  /** A capsule point (layout CandidatePoint in manifold-capsule.ts). */
   readonly candidate = new Float64Array(7);
   /** Two packed shapes, for `collide` on geometry objects. */
   readonly packed = new Float64Array(2 * Pack.STRIDE);

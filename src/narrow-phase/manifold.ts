@@ -1,8 +1,9 @@
-import { Pack, packGeometry } from '../geometry/packed';
+import { isOneSided, Pack, packGeometry } from '../geometry/packed';
 import type { Geometry, Manifold } from '../geometry/types';
 import type { Transform } from '../math/vec2';
 import type { CollideContext } from './collide-context';
 import { collideRoundedSegmentPair } from './manifold-capsule';
+import { admitChainNormal, isBehindSegment } from './manifold-chain';
 import { collideCirclePolygon, collideCircleRoundedSegment, collideCircles } from './manifold-circle';
 import { collidePackedPolygons } from './manifold-polygon';
 
@@ -65,13 +66,34 @@ const PAIRS: readonly PairFunction[] = [
 /** 1 where the pair function takes the shapes in the other order: call it swapped, flip the normal. */
 const SWAPPED: readonly number[] = [0, 0, 0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 0];
 
+/** The manifold of two-sided shapes: the pair routine of the table, in the order it takes them. */
+function collideTwoSided(
+  pair: number,
+  data: Float64Array,
+  baseA: number,
+  xfA: Transform,
+  baseB: number,
+  xfB: Transform,
+  out: Manifold,
+  context: CollideContext,
+): void {
+  if (SWAPPED[pair] === 1) {
+    PAIRS[pair](data, baseB, xfB, baseA, xfA, out, context);
+    out.normalX = -out.normalX;
+    out.normalY = -out.normalY;
+  } else {
+    PAIRS[pair](data, baseA, xfA, baseB, xfB, out, context);
+  }
+}
+
 /**
  * Contact manifold of the shapes of kinds `kindA` and `kindB` packed in `data` at `baseA` and `baseB`
  * (see packed.ts: the narrow phase passes the shape store's records), placed at `xfA` and `xfB`:
  * world normal from A to B, up to two world points halfway between the surfaces, each with its
  * separation (< 0 overlapping) and feature id. Only points with separation below the speculative
  * distance `context.reach` are kept; the context's hints and results are described in
- * collide-context.ts (set them first). Allocation free.
+ * collide-context.ts (set them first). A chain's one-sided segment follows manifold-chain.ts.
+ * Allocation free.
  */
 export function collidePacked(
   kindA: number,
@@ -85,13 +107,22 @@ export function collidePacked(
   context: CollideContext,
 ): void {
   const pair = kindA * 4 + kindB;
-  if (SWAPPED[pair] === 1) {
-    PAIRS[pair](data, baseB, xfB, baseA, xfA, out, context);
-    out.normalX = -out.normalX;
-    out.normalY = -out.normalY;
-  } else {
-    PAIRS[pair](data, baseA, xfA, baseB, xfB, out, context);
+  const chainA = isOneSided(kindA, data, baseA);
+  const chainB = isOneSided(kindB, data, baseB);
+  if (!chainA && !chainB) {
+    collideTwoSided(pair, data, baseA, xfA, baseB, xfB, out, context);
+    return;
   }
+  const segBase = chainA ? baseA : baseB;
+  const segXf = chainA ? xfA : xfB;
+  const otherBase = chainA ? baseB : baseA;
+  const otherXf = chainA ? xfB : xfA;
+  if (isBehindSegment(data, segBase, segXf, otherBase, otherXf, context)) {
+    out.pointCount = 0;
+    return;
+  }
+  collideTwoSided(pair, data, baseA, xfA, baseB, xfB, out, context);
+  if (out.pointCount > 0) admitChainNormal(data, segBase, segXf, otherBase, otherXf, chainB, out, context);
 }
 
 /**

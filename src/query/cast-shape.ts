@@ -1,5 +1,6 @@
 import type { World } from '../api/world';
 import { computeShapeBounds } from '../geometry/bounds';
+import { frontOffsetAt, isOneSided, Pack } from '../geometry/packed';
 import { shapeCast } from '../geometry/shape-cast';
 import { makeProxy } from '../geometry/shape-proxy';
 import { checkGeometry, checkPoint, resolveTransform } from './args';
@@ -47,6 +48,17 @@ export function castShape(
     found,
   );
   makeProxy(g, input.proxyB);
+  // the cast shape's centre (the mean of its points): a chain's segment it starts behind lets it pass
+  const proxy = input.proxyB;
+  let lx = 0;
+  let ly = 0;
+  for (let i = 0; i < proxy.count; i++) {
+    lx += proxy.x[i] / proxy.count;
+    ly += proxy.y[i] / proxy.count;
+  }
+  const xfB = input.transformB;
+  const centreX = xfB.p.x + xfB.q.c * lx - xfB.q.s * ly;
+  const centreY = xfB.p.y + xfB.q.s * lx + xfB.q.c * ly;
   input.translationX = tx;
   input.translationY = ty;
   let best = -1;
@@ -58,8 +70,14 @@ export function castShape(
   for (let i = 0; i < found.length; i++) {
     const s = found.data[i];
     if (!passesQueryFilter(shapes, s, filter)) continue;
-    makeProxy(shapes.geometry[s]!, input.proxyA);
     core.fillTransform(shapes.body[s], input.transformA);
+    const base = s * Pack.STRIDE;
+    if (
+      isOneSided(shapes.kind[s], shapes.packed, base) &&
+      frontOffsetAt(shapes.packed, base, input.transformA, centreX, centreY) < 0
+    )
+      continue;
+    makeProxy(shapes.geometry[s]!, input.proxyA);
     input.maxFraction = fraction;
     shapeCast(m.gjk, input, output);
     if (!output.hit) continue;

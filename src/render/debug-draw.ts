@@ -225,12 +225,29 @@ function drawShapes(world: World, draw: DebugDraw, flags: DebugDrawFlags, option
           transformPoint(xf, g.point1, pA);
           transformPoint(xf, g.point2, pB);
           draw.drawLine(pA, pB, sensor ? colors.sensor : color);
+          if (g.oneSided) drawFrontTick(pA, pB, draw, sensor ? colors.sensor : color);
           break;
         }
       }
     }
   }
 }
+
+/**
+ * A chain segment's front: a tick from its middle along its normal (right of the way from a to b), a
+ * fifth of its length and at most ONE_SIDED_TICK long.
+ */
+function drawFrontTick(a: Vec2, b: Vec2, draw: DebugDraw, color: Color): void {
+  const ex = b.x - a.x;
+  const ey = b.y - a.y;
+  const length = Math.sqrt(ex * ex + ey * ey);
+  const tick = Math.min(0.2 * length, ONE_SIDED_TICK) / length;
+  const mid = { x: 0.5 * (a.x + b.x), y: 0.5 * (a.y + b.y) };
+  draw.drawLine(mid, { x: mid.x + tick * ey, y: mid.y - tick * ex }, color);
+}
+
+/** Longest front tick of a chain segment, in metres. */
+const ONE_SIDED_TICK = 0.15;
 
 function transformPoint(xf: Transform, p: Vec2, out: Vec2): Vec2 {
   const x = xf.q.c * p.x - xf.q.s * p.y + xf.p.x;

@@ -32,6 +32,8 @@ export class ContinuousMemory {
   readonly xf = makeTransform();
   /** the other body's transform and the ray's hit, for discCentreRunsIn */
   readonly otherXf = makeTransform();
+  /** a shape's centroid in its body's frame */
+  readonly centre = { x: 0, y: 0 };
   readonly centreHit = makeRayHit();
   /** the swept box of a shape, as minX, minY, maxX, maxY */
   readonly sweptBox = new Float64Array(4);

@@ -1,11 +1,12 @@
 import { packedBounds } from '../geometry/bounds';
 import { minExtent } from '../geometry/extent';
-import { Pack } from '../geometry/packed';
+import { frontOffsetAt, isOneSided, Pack } from '../geometry/packed';
 import { rayCastGeometry } from '../geometry/raycast';
 import { makeProxy, type ShapeProxy } from '../geometry/shape-proxy';
 import { getSweepTransform } from '../geometry/sweep';
 import { timeOfImpact } from '../geometry/toi';
 import { type Geometry, ShapeKind } from '../geometry/types';
+import type { Vec2 } from '../math/vec2';
 import { BodyFlag } from '../store/body-store';
 import { ShapeFlag, shouldShapesCollide } from '../store/shape-store';
 import type { WorldCore } from './world-core';
@@ -118,6 +119,12 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
       const ob = shapes.body[other];
       if (ob === b || (bodies.flags[ob] & BodyFlag.BULLET) !== 0 || !core.jointsAllowCollision(b, ob))
         continue;
+      const otherBase = other * Pack.STRIDE;
+      if (
+        isOneSided(shapes.kind[other], shapes.packed, otherBase) &&
+        skipsChainSegment(core, b, g, otherBase, ob)
+      )
+        continue;
       makeProxy(shapes.geometry[other]!, input.proxyA);
       const sa = input.sweepA;
       sa.localCenterX = 0;
@@ -134,7 +141,7 @@ function sweepAgainst(core: WorldCore, b: number, starts: Float64Array, at: numb
         // touches). Sweep a disc of a quarter of the shape's thickness at its centroid instead,
         // so that at least the shape's core cannot cross.
         if (!discReady) {
-          loadDisc(g, discProxy);
+          loadDisc(g, discProxy, m.centre);
           discReady = true;
         }
         input.proxyB = discProxy;
@@ -199,25 +206,59 @@ function discCentreRunsIn(core: WorldCore, other: number, ob: number): boolean {
   return rayCastGeometry(core.shapes.geometry[other]!, otherXf, x0, y0, x1 - x0, y1 - y0, m.centreHit);
 }
 
-/** A one-point proxy at the shape's centroid with a quarter of its smallest half-thickness as radius. */
-function loadDisc(g: Geometry, out: ShapeProxy): void {
-  let x: number;
-  let y: number;
+/**
+ * Whether the sweep of shape `g` of body `b` skips the chain's one-sided segment packed at `base` of
+ * body `ob`: when its centroid starts behind the segment (it passes through, as contacts let it), or
+ * comes toward the segment's line by less than a quarter of the shape's thickness over the step.
+ * A body sliding along a chain does not come toward it, and sweeping it would stop it at every seam
+ * (the sweep's target distance finds the next segment's end in its way); a slow approach is the
+ * speculative contact's.
+ */
+function skipsChainSegment(core: WorldCore, b: number, g: Geometry, base: number, ob: number): boolean {
+  const bodies = core.bodies;
+  const m = core.work.continuous;
+  const centre = m.centre;
+  shapeCentroid(g, centre);
+  const otherXf = m.otherXf;
+  otherXf.p.x = bodies.px[ob];
+  otherXf.p.y = bodies.py[ob];
+  otherXf.q.c = bodies.qc[ob];
+  otherXf.q.s = bodies.qs[ob];
+  const start = m.start;
+  const x1 = start.p.x + start.q.c * centre.x - start.q.s * centre.y;
+  const y1 = start.p.y + start.q.s * centre.x + start.q.c * centre.y;
+  const offset1 = frontOffsetAt(core.shapes.packed, base, otherXf, x1, y1);
+  if (offset1 < 0) return true;
+  const c = bodies.qc[b];
+  const s = bodies.qs[b];
+  const x2 = bodies.px[b] + c * centre.x - s * centre.y;
+  const y2 = bodies.py[b] + s * centre.x + c * centre.y;
+  const offset2 = frontOffsetAt(core.shapes.packed, base, otherXf, x2, y2);
+  return offset1 - offset2 < 0.25 * minExtent(g);
+}
+
+/** The centroid of `g` in its body's frame, to `out`. */
+function shapeCentroid(g: Geometry, out: Vec2): void {
   if (g.kind === ShapeKind.CIRCLE) {
-    x = g.center.x;
-    y = g.center.y;
+    out.x = g.center.x;
+    out.y = g.center.y;
   } else if (g.kind === ShapeKind.CAPSULE) {
-    x = 0.5 * (g.center1.x + g.center2.x);
-    y = 0.5 * (g.center1.y + g.center2.y);
+    out.x = 0.5 * (g.center1.x + g.center2.x);
+    out.y = 0.5 * (g.center1.y + g.center2.y);
   } else if (g.kind === ShapeKind.POLYGON) {
-    x = g.centroid.x;
-    y = g.centroid.y;
+    out.x = g.centroid.x;
+    out.y = g.centroid.y;
   } else {
-    x = 0.5 * (g.point1.x + g.point2.x);
-    y = 0.5 * (g.point1.y + g.point2.y);
+    out.x = 0.5 * (g.point1.x + g.point2.x);
+    out.y = 0.5 * (g.point1.y + g.point2.y);
   }
-  out.x[0] = x;
-  out.y[0] = y;
+}
+
+/** A one-point proxy at the shape's centroid with a quarter of its smallest half-thickness as radius. */
+function loadDisc(g: Geometry, out: ShapeProxy, centre: Vec2): void {
+  shapeCentroid(g, centre);
+  out.x[0] = centre.x;
+  out.y[0] = centre.y;
   out.count = 1;
   out.radius = 0.25 * minExtent(g);
 }

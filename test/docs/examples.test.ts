@@ -93,6 +93,19 @@ describe('docs examples', () => {
     expect(box.isAwake).toBe(false);
   });
 
+  it('chains: the ball rolls over the hills, the box jumps onto the one-way platform, the marble stays in the loop', async () => {
+    const { ball, jumper, marble, segments } = await import('../../docs/examples/chain');
+    expect(segments).toHaveLength(160);
+    expect(ball.position.x).toBeGreaterThan(-5);
+    // on the curve y = 0.3 cos x: the centre 0.3 m along the normal from it
+    const x = ball.position.x;
+    const slope = -0.3 * Math.sin(x);
+    const height = (ball.position.y - 0.3 * Math.cos(x)) * (1 / Math.sqrt(1 + slope * slope));
+    expect(Math.abs(height - 0.3)).toBeLessThan(0.01);
+    expect(jumper.position.y).toBeCloseTo(3.4, 2);
+    expect(marble.position.y).toBeCloseTo(-1.5, 2);
+  });
+
   it('concave: the L weighs its 1.75 m², rests on the ground and sleeps; the cup holds the ball', async () => {
     const { ball, cup, cupPieces, l, pieces, refusal } = await import('../../docs/examples/concave');
     expect(pieces.length).toBe(2);

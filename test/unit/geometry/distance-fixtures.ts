@@ -43,7 +43,15 @@ export function capsule(x1: number, y1: number, x2: number, y2: number, radius: 
 }
 
 export function segment(x1: number, y1: number, x2: number, y2: number): Segment {
-  return { type: 'segment', kind: ShapeKind.SEGMENT, point1: { x: x1, y: y1 }, point2: { x: x2, y: y2 } };
+  return {
+    type: 'segment',
+    kind: ShapeKind.SEGMENT,
+    point1: { x: x1, y: y1 },
+    point2: { x: x2, y: y2 },
+    oneSided: false,
+    ghost1: null,
+    ghost2: null,
+  };
 }
 
 /** Convex polygon from CCW points (no three collinear). */
