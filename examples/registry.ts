@@ -5,10 +5,12 @@ import { carDemo } from './demos/car';
 import { cardHouseDemo } from './demos/card-house';
 import { chainBridgeDemo } from './demos/chain-bridge';
 import { clothDemo } from './demos/cloth';
+import { concaveRainDemo } from './demos/concave-rain';
 import { filteringDemo } from './demos/filtering';
 import { golfDemo } from './demos/golf';
 import { heavyLoadsDemo } from './demos/heavy-loads';
 import { newtonsCradleDemo } from './demos/newtons-cradle';
+import { oneWayDemo } from './demos/one-way';
 import { p5Demo } from './demos/p5-sketch';
 import { phaserDemo } from './demos/phaser';
 import { pixiDemo } from './demos/pixi';
@@ -19,6 +21,7 @@ import { rayCastDemo } from './demos/ray-cast';
 import { slingshotDemo } from './demos/slingshot';
 import { softBodyDemo } from './demos/soft-body';
 import { stressDemo } from './demos/stress';
+import { svgTerrainDemo } from './demos/svg-terrain';
 import { tumblerDemo } from './demos/tumbler';
 
 export const demos: readonly Demo[] = [
@@ -30,6 +33,9 @@ export const demos: readonly Demo[] = [
   heavyLoadsDemo,
   ragdollsDemo,
   carDemo,
+  svgTerrainDemo,
+  concaveRainDemo,
+  oneWayDemo,
   clothDemo,
   softBodyDemo,
   planetsDemo,

@@ -1,0 +1,111 @@
+import { type Body, parseSvgPath, Shape, type Vec2, type WheelJoint, World } from '../../src/index';
+import type { Demo } from '../demo';
+import { drawnPosition, onKeys } from '../lib';
+
+/**
+ * The level as an artist would draw it: SVG path data in pixels, y down, with every kind of curve
+ * (cubic, smooth cubic, quadratic, smooth quadratic, an arc for the half-pipe).
+ */
+const TERRAIN =
+  'M0 100 V300 H320 C420 300 460 250 560 250 S700 300 800 300 Q880 300 940 280 T1060 270 ' +
+  'A400 400 0 0 0 1460 270 L1560 270 L1760 220 H1900 C2000 220 2060 300 2200 300 H2500 V120';
+/** the car's body, drawn the same way: a concave outline (hood, windscreen, roof, boot) */
+const CAR_BODY = 'M-90 -2 L-86 -22 L-52 -26 L-34 -50 L26 -50 L48 -26 L86 -20 L92 -2 Z';
+const PIXELS_PER_METRE = 40;
+const SPEED = 16;
+const TORQUE = 30;
+
+export const svgTerrainDemo: Demo = {
+  id: 'svg-terrain',
+  title: 'Terrain from SVG',
+  description:
+    'The ground is one SVG path (curves, an arc) read by parseSvgPath and laid as a smooth chain; the car body is a concave SVG outline. Wheels roll over hundreds of seams without a bump. Drive with the arrow keys or the buttons.',
+  view: { center: { x: 8, y: 1 }, halfHeight: 6 },
+  create: (ctx) => {
+    const world = new World();
+    const options = { scale: 1 / PIXELS_PER_METRE, flipY: true, tolerance: 1 };
+    const [terrain] = parseSvgPath(TERRAIN, options);
+    // drawn left to right, so reversed: a chain faces right of the way its points run
+    const ground = world.createBody({ position: { x: 0, y: 7.5 } });
+    const segments = ground.createShape(Shape.chain([...terrain.points].reverse()), { friction: 0.9 });
+
+    const [outline] = parseSvgPath(CAR_BODY, { scale: 1 / 60, flipY: true, tolerance: 1 });
+    const chassis = world.createBody({ type: 'dynamic', position: { x: 3, y: 1.6 } });
+    chassis.createShape(Shape.concave(outline.points), { density: 2 });
+    const wheels: Body[] = [];
+    for (const x of [-0.95, 1.0]) {
+      const wheel = world.createBody({ type: 'dynamic', position: { x: 3 + x, y: 1.0 } });
+      wheel.createShape(Shape.circle(0.38), { friction: 1.2, density: 1.5 });
+      wheels.push(wheel);
+    }
+    let motorSpeed = -SPEED;
+    const joints = wheels.map(
+      (wheel) =>
+        world.createJoint({
+          type: 'wheel',
+          bodyA: chassis,
+          bodyB: wheel,
+          localAnchorA: chassis.getLocalPoint(wheel.position),
+          localAnchorB: { x: 0, y: 0 },
+          axis: { x: 0, y: 1 },
+          enableSpring: true,
+          hertz: 4,
+          dampingRatio: 0.7,
+          enableMotor: true,
+          motorSpeed,
+          maxMotorTorque: TORQUE,
+        }) as WheelJoint,
+    );
+    const drive = (speed: number) => {
+      motorSpeed = speed;
+      for (const joint of joints) joint.setMotorSpeed(speed);
+      chassis.setAwake(true);
+      ctx.setStatus(speed < 0 ? 'drive: forward' : speed > 0 ? 'drive: back' : 'drive: brake');
+    };
+    ctx.setStatus('drive: forward');
+    ctx.button('◀ Back', () => drive(SPEED));
+    ctx.button('Brake', () => drive(0));
+    ctx.button('Forward ▶', () => drive(-SPEED));
+    ctx.track(
+      onKeys(['ArrowLeft', 'ArrowRight', 'a', 'd'], (key, down) => {
+        if (!down) drive(0);
+        else drive(key === 'ArrowRight' || key === 'd' ? -SPEED : SPEED);
+      }),
+    );
+    ctx.render.setBodyStyle(chassis, { color: 0xe0a33a });
+    for (const wheel of wheels) ctx.render.setBodyStyle(wheel, { color: 0x3c4250 });
+
+    // the earth under the chain, and the camera following the car
+    const earth: Vec2[] = terrain.points.map((p) => ({ x: p.x, y: p.y + 7.5 }));
+    ctx.track(
+      ctx.render.on('beforeDraw', ({ render }) => {
+        render.setWorldTransform();
+        const context = render.context;
+        const sky = context.createLinearGradient(0, 12, 0, -4);
+        sky.addColorStop(0, '#16243a');
+        sky.addColorStop(1, '#2a3f5c');
+        context.fillStyle = sky;
+        context.fillRect(-20, -20, 100, 40);
+        const soil = context.createLinearGradient(0, 4, 0, -6);
+        soil.addColorStop(0, '#4f7a3a');
+        soil.addColorStop(0.08, '#5b4531');
+        soil.addColorStop(1, '#2c2219');
+        context.fillStyle = soil;
+        context.beginPath();
+        context.moveTo(earth[0].x, -20);
+        for (const p of earth) context.lineTo(p.x, p.y);
+        context.lineTo(earth[earth.length - 1].x, -20);
+        context.closePath();
+        context.fill();
+        render.setScreenTransform();
+        const camera = render.camera;
+        const p = drawnPosition(ctx.runner, chassis);
+        camera.center = {
+          x: camera.center.x + (p.x + camera.halfHeight * 0.4 - camera.center.x) * 0.08,
+          y: camera.center.y + (p.y + 1 - camera.center.y) * 0.08,
+        };
+      }),
+    );
+    return { world, chassis, wheels, segments, speed: () => motorSpeed };
+  },
+};
