@@ -1,5 +1,6 @@
 /** Scene builders shared by tests, examples and benchmarks, and the registry the benchmark runs. */
 import { cardHouse } from './card-house';
+import { concaveRain } from './concave-rain';
 import { bulletsAtPlanks, highDrop, spinningBar } from './continuous';
 import { freeFall } from './free-fall';
 import { bridge, carOnHills, newtonsCradle, pendulum, ragdolls, slingshot } from './joint-scenes';
@@ -20,6 +21,7 @@ export {
   cardHouse,
   carOnHills,
   chain,
+  concaveRain,
   freeFall,
   highDrop,
   highMassRatio,
@@ -44,6 +46,7 @@ export const sceneBuilders: Record<string, (quick?: boolean) => Scene> = {
   'many-pyramids': (quick) => manyPyramids({ count: quick ? 5 : 20, base: 10 }),
   rain: (quick) => rain({ count: quick ? 300 : 1000 }),
   tumbler: (quick) => tumbler({ count: quick ? 200 : 500 }),
+  'concave-rain': (quick) => concaveRain({ count: quick ? 200 : 500 }),
   'joint-grid': (quick) => jointGrid({ size: quick ? 20 : 40 }),
   chain: () => chain({ links: 100 }),
   'vertical-stack': () => verticalStack({ count: 20 }),

@@ -21,6 +21,7 @@ export { World, type WorldDef } from './api/world';
 export { FulcrumError } from './core/errors';
 export { Shape } from './geometry/shapes';
 export { parseSvgPath, type SvgPathOptions, type SvgSubpath } from './geometry/svg-path';
+export { svgShapes } from './geometry/svg-shapes';
 export type { Capsule, Chain, Circle, Concave, Geometry, Polygon, Segment } from './geometry/types';
 export { DistanceJoint, type DistanceJointDef } from './joints/distance-joint';
 export { Joint } from './joints/joint';

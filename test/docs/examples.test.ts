@@ -93,6 +93,23 @@ describe('docs examples', () => {
     expect(box.isAwake).toBe(false);
   });
 
+  it('svgShapes: the hills are a chain facing up, the crate lands on them', async () => {
+    const { box, hills, pieces, segments } = await import('../../docs/examples/svg-shapes');
+    expect(hills.type === 'chain' ? hills.points[0] : null).toEqual({ x: 8, y: -6 }); // reversed: it faces up
+    expect(segments.length).toBeGreaterThan(3);
+    expect(pieces).toHaveLength(1);
+    // the crate (0.8 m square) came to rest on the hills: its centre 0.4 m above the chain's line
+    // (a little more vertically, on the slope)
+    const points = hills.type === 'chain' ? hills.points : [];
+    const c = box.worldCenter;
+    const i = points.findIndex((p, k) => k + 1 < points.length && p.x >= c.x && points[k + 1].x <= c.x);
+    const [a, b] = [points[i], points[i + 1]];
+    const lineY = a.y + ((b.y - a.y) * (c.x - a.x)) / (b.x - a.x);
+    expect(c.y - lineY).toBeGreaterThan(0.395);
+    expect(c.y - lineY).toBeLessThan(0.42);
+    expect(Math.hypot(box.linearVelocity.x, box.linearVelocity.y)).toBeLessThan(0.01);
+  });
+
   it('chains: the ball rolls over the hills, the box jumps onto the one-way platform, the marble stays in the loop', async () => {
     const { ball, jumper, marble, segments } = await import('../../docs/examples/chain');
     expect(segments).toHaveLength(160);

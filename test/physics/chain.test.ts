@@ -1,5 +1,14 @@
 import { describe, expect, it } from 'vitest';
-import { FulcrumError, Shape, stateHash, type Vec2, World } from '../../src/index';
+import {
+  type Chain,
+  type Concave,
+  FulcrumError,
+  Shape,
+  stateHash,
+  svgShapes,
+  type Vec2,
+  World,
+} from '../../src/index';
 import { run } from '../helpers/world';
 
 const G = 10;
@@ -259,5 +268,25 @@ describe('Shape.chain: arguments', () => {
     run(world, 1);
     run(copy, 1);
     expect(stateHash(copy)).toBe(stateHash(world));
+  });
+});
+
+describe('svgShapes', () => {
+  it('makes a concave shape of each closed subpath and ground facing up of each open one', () => {
+    // y down as drawn, flipped upright: an L and a terrain drawn left to right, then one drawn right to left
+    const shapes = svgShapes('M0 0 h2 v-1 h-1 v-1 h-1 z M-10 5 L10 5 M10 8 L-10 8', { flipY: true });
+    expect(shapes.map((s) => s.type)).toEqual(['concave', 'chain', 'chain']);
+    const [l, drawnRight, drawnLeft] = shapes as [Concave, Chain, Chain];
+    expect(l.pieces).toHaveLength(2);
+    // both chains run right to left: they face up
+    expect(drawnRight.points[0]).toEqual({ x: 10, y: -5 });
+    expect(drawnLeft.points[0]).toEqual({ x: 10, y: -8 });
+    const world = new World();
+    world.createBody().createShape(drawnRight);
+    const box = world.createBody({ type: 'dynamic', position: { x: 0, y: -3 } });
+    box.createShape(l);
+    run(world, 2);
+    // the L's lowest edge, 0 in the drawing (y = 0 flipped), rests on the line y = -5
+    expect(box.getWorldPoint({ x: 0, y: 0 }).y).toBeCloseTo(-5, 2);
   });
 });
