@@ -1,16 +1,19 @@
 import { type Body, parseSvgPath, Shape, type Vec2, type WheelJoint, World } from '../../src/index';
 import type { Demo } from '../demo';
 import { drawnPosition, onKeys } from '../lib';
+import LEVEL from './svg-terrain.svg?raw';
 
 /**
- * The level as an artist would draw it: SVG path data in pixels, y down, with every kind of curve
- * (cubic, smooth cubic, quadratic, smooth quadratic, an arc for the half-pipe).
+ * The level as an artist would draw it, in an SVG file: the ground is a path in pixels, y down, with
+ * every kind of curve (cubic, smooth cubic, quadratic, smooth quadratic, an arc for the dip); the
+ * car's body is a closed concave outline (hood, windscreen, roof, boot).
  */
-const TERRAIN =
-  'M0 100 V300 H320 C420 300 460 250 560 250 S700 300 800 300 Q880 300 940 280 T1060 270 ' +
-  'A400 400 0 0 0 1460 270 L1560 270 L1760 220 H1900 C2000 220 2060 300 2200 300 H2500 V120';
-/** the car's body, drawn the same way: a concave outline (hood, windscreen, roof, boot) */
-const CAR_BODY = 'M-90 -2 L-86 -22 L-52 -26 L-34 -50 L26 -50 L48 -26 L86 -20 L92 -2 Z';
+function pathData(id: string): string {
+  const d = new DOMParser().parseFromString(LEVEL, 'image/svg+xml').getElementById(id)?.getAttribute('d');
+  if (!d) throw new Error(`svg-terrain.svg has no path #${id}`);
+  return d;
+}
+
 const PIXELS_PER_METRE = 40;
 const SPEED = 16;
 const TORQUE = 30;
@@ -19,17 +22,17 @@ export const svgTerrainDemo: Demo = {
   id: 'svg-terrain',
   title: 'Terrain from SVG',
   description:
-    'The ground is one SVG path (curves, an arc) read by parseSvgPath and laid as a smooth chain; the car body is a concave SVG outline. Wheels roll over hundreds of seams without a bump. Drive with the arrow keys or the buttons.',
+    'The level is an SVG file: its ground path (curves, an arc) is read by parseSvgPath and laid as a smooth chain, the car body is a concave outline from the same file. Wheels roll over hundreds of seams without a bump. Drive with the arrow keys or the buttons.',
   view: { center: { x: 8, y: 1 }, halfHeight: 6 },
   create: (ctx) => {
     const world = new World();
     const options = { scale: 1 / PIXELS_PER_METRE, flipY: true, tolerance: 1 };
-    const [terrain] = parseSvgPath(TERRAIN, options);
+    const [terrain] = parseSvgPath(pathData('ground'), options);
     // drawn left to right, so reversed: a chain faces right of the way its points run
     const ground = world.createBody({ position: { x: 0, y: 7.5 } });
     const segments = ground.createShape(Shape.chain([...terrain.points].reverse()), { friction: 0.9 });
 
-    const [outline] = parseSvgPath(CAR_BODY, { scale: 1 / 60, flipY: true, tolerance: 1 });
+    const [outline] = parseSvgPath(pathData('car-body'), { scale: 1 / 60, flipY: true, tolerance: 1 });
     const chassis = world.createBody({ type: 'dynamic', position: { x: 3, y: 1.6 } });
     chassis.createShape(Shape.concave(outline.points), { density: 2 });
     const wheels: Body[] = [];
