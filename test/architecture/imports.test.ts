@@ -73,6 +73,21 @@ const LAYERS: Record<string, readonly string[]> = {
     'joints',
     'query',
   ],
+  // the matter.js layer: over the public API (index.ts) and the browser layer
+  matter: [
+    'core',
+    'math',
+    'geometry',
+    'broad-phase',
+    'narrow-phase',
+    'store',
+    'solver',
+    'world',
+    'api',
+    'joints',
+    'query',
+    'render',
+  ],
 };
 const PUBLIC_LAYER = new Set(['api', 'joints', 'query']);
 
