@@ -115,7 +115,7 @@ export const Common = {
   },
 
   clamp(value: number, min: number, max: number): number {
-    return value < min ? min : value > max ? max : value;
+    return Math.min(Math.max(value, min), max);
   },
 
   sign(value: number): number {
@@ -216,12 +216,20 @@ export const Common = {
 
   /** Makes the function at `path` in `base` call `func` before it. */
   chainPathBefore(base: Obj, path: string, func: (...args: unknown[]) => unknown) {
-    return Common.set(base, path, Common.chain(func, Common.get(base, path) as (...args: unknown[]) => unknown));
+    return Common.set(
+      base,
+      path,
+      Common.chain(func, Common.get(base, path) as (...args: unknown[]) => unknown),
+    );
   },
 
   /** Makes the function at `path` in `base` call `func` after it. */
   chainPathAfter(base: Obj, path: string, func: (...args: unknown[]) => unknown) {
-    return Common.set(base, path, Common.chain(Common.get(base, path) as (...args: unknown[]) => unknown, func));
+    return Common.set(
+      base,
+      path,
+      Common.chain(Common.get(base, path) as (...args: unknown[]) => unknown, func),
+    );
   },
 
   /** Accepted for matter.js programs that pass poly-decomp: Fulcrum splits concave outlines itself. */

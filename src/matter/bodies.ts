@@ -1,0 +1,121 @@
+import { Shape } from '../geometry/shapes';
+import { Body, type BodyOptions, type MatterBody } from './body';
+import { Common } from './common';
+import type { MatterVector } from './vector';
+import { Vertices } from './vertices';
+
+type Options = Omit<BodyOptions, 'chamfer'> & {
+  chamfer?: { radius?: number | number[]; quality?: number; qualityMin?: number; qualityMax?: number };
+};
+
+function finish(options: Options | undefined, defaults: Options, points: MatterVector[]): MatterBody {
+  const settings = Common.extend({}, defaults, options) as Options;
+  let vertices = points;
+  if (settings.chamfer) {
+    const c = settings.chamfer;
+    vertices = Vertices.chamfer(points, c.radius, c.quality, c.qualityMin, c.qualityMax);
+  }
+  return Body.create({
+    ...settings,
+    vertices,
+    chamfer: settings.chamfer ? { radius: settings.chamfer.radius ?? 8 } : null,
+  });
+}
+
+/** matter.js's `Bodies`: factories of common bodies, at world positions in pixels. A plain, mutable module object. */
+export const Bodies = {
+  /** A `width` by `height` rectangle centred on (x, y). */
+  rectangle(x: number, y: number, width: number, height: number, options?: Options): MatterBody {
+    return finish(options, { label: 'Rectangle Body', position: { x, y } }, [
+      { x: 0, y: 0 },
+      { x: width, y: 0 },
+      { x: width, y: height },
+      { x: 0, y: height },
+    ]);
+  },
+
+  /** A trapezoid `width` wide at its base, its top `slope` times narrower on each side. */
+  trapezoid(
+    x: number,
+    y: number,
+    width: number,
+    height: number,
+    slope: number,
+    options?: Options,
+  ): MatterBody {
+    const top = slope * width * 0.5;
+    const points =
+      slope < 1
+        ? [
+            { x: 0, y: 0 },
+            { x: top, y: -height },
+            { x: width - top, y: -height },
+            { x: width, y: 0 },
+          ]
+        : [
+            { x: 0, y: 0 },
+            { x: width / 2, y: -height },
+            { x: width, y: 0 },
+          ];
+    return finish(options, { label: 'Trapezoid Body', position: { x, y } }, points);
+  },
+
+  /**
+   * A circle of `radius` centred on (x, y). It collides as a true circle in Fulcrum; its `vertices`
+   * are a polygon of up to `maxSides` (default 25) sides, as matter draws and queries it.
+   */
+  circle(x: number, y: number, radius: number, options?: Options, maxSides = 25): MatterBody {
+    if (typeof radius !== 'number' || !(radius > 0) || !Number.isFinite(radius)) {
+      Shape.circle(radius); // the engine's own check and its FulcrumError
+    }
+    const sides = Math.ceil(Math.max(10, Math.min(maxSides, radius)));
+    const body = Bodies.polygon(x, y, sides % 2 === 1 ? sides + 1 : sides, radius, {
+      label: 'Circle Body',
+      ...options,
+      circleRadius: radius,
+    });
+    return body;
+  },
+
+  /** A regular polygon of `sides` sides (3 or more) inscribed in a circle of `radius`, centred on (x, y). */
+  polygon(x: number, y: number, sides: number, radius: number, options?: Options): MatterBody {
+    if (sides < 3) return Bodies.circle(x, y, radius, options);
+    const step = (2 * Math.PI) / sides;
+    const points: MatterVector[] = [];
+    for (let i = 0; i < sides; i++) {
+      const a = step * 0.5 + step * i;
+      points.push({ x: radius * Math.cos(a), y: radius * Math.sin(a) });
+    }
+    return finish(options, { label: 'Polygon Body', position: { x, y } }, points);
+  },
+
+  /**
+   * A body from one outline or several (`vertexSets`), centred on (x, y). A concave outline is split
+   * into convex parts by the engine itself (no poly-decomp needed): the result is a compound body
+   * whose parts are the pieces, as matter.js builds it.
+   */
+  fromVertices(
+    x: number,
+    y: number,
+    vertexSets: MatterVector[] | MatterVector[][],
+    options?: Options,
+  ): MatterBody {
+    const sets = (Array.isArray(vertexSets[0]) ? vertexSets : [vertexSets]) as MatterVector[][];
+    const { chamfer: _chamfer, ...settings } = options ?? {};
+    const parts: MatterBody[] = [];
+    for (const set of sets) {
+      const points = set.map((p) => ({ x: p.x, y: p.y }));
+      if (Vertices.isConvex(points) || Vertices.isConvex(points.slice().reverse())) {
+        parts.push(Body.create({ ...settings, vertices: points, position: Vertices.centre(points) }));
+        continue;
+      }
+      for (const piece of Shape.decompose(points)) {
+        const vertices = piece.vertices.map((v) => ({ x: v.x, y: v.y }));
+        parts.push(Body.create({ ...settings, vertices, position: Vertices.centre(vertices) }));
+      }
+    }
+    const body = parts.length === 1 ? parts[0] : Body.create({ ...settings, parts });
+    Body.setPosition(body, { x, y });
+    return body;
+  },
+};

@@ -1,0 +1,203 @@
+import type { MatterBody } from './body';
+import { Body } from './body';
+import { Common } from './common';
+import { Events } from './events';
+import type { MatterVector } from './vector';
+
+/** A matter.js composite: bodies, constraints and composites, nested. */
+export interface MatterComposite {
+  id: number;
+  type: 'composite';
+  parent: MatterComposite | null;
+  isModified: boolean;
+  bodies: MatterBody[];
+  constraints: { type: 'constraint'; id: number; [key: string]: unknown }[];
+  composites: MatterComposite[];
+  label: string;
+  plugin: Record<string, unknown>;
+  events: Record<string, ((event: Record<string, unknown>) => void)[]> | null;
+  [key: string]: unknown;
+}
+
+type Member =
+  | MatterBody
+  | MatterComposite
+  | { type: 'constraint' | 'mouseConstraint'; id: number; [key: string]: unknown };
+
+/** matter.js's `Composite` (and, with `World`, its 0.20 aliases). A plain, mutable module object. */
+export const Composite = {
+  create(options: Partial<MatterComposite> = {}): MatterComposite {
+    return Common.extend(
+      {
+        id: Common.nextId(),
+        type: 'composite',
+        parent: null,
+        isModified: false,
+        bodies: [],
+        constraints: [],
+        composites: [],
+        label: 'Composite',
+        plugin: {},
+        events: null,
+      },
+      options,
+    ) as MatterComposite;
+  },
+
+  /** Marks `composite` modified (and its parents, its children, if asked). */
+  setModified(
+    composite: MatterComposite,
+    isModified: boolean,
+    updateParents = false,
+    updateChildren = false,
+  ): void {
+    composite.isModified = isModified;
+    if (updateParents && composite.parent) Composite.setModified(composite.parent, isModified, true, false);
+    if (updateChildren)
+      for (const child of composite.composites) Composite.setModified(child, isModified, false, true);
+  },
+
+  /** Adds a body, constraint, composite or mouse constraint, or an array of them. Returns the composite. */
+  add(composite: MatterComposite, object: Member | Member[]): MatterComposite {
+    const objects = Array.isArray(object) ? object : [object];
+    Events.trigger(composite, 'beforeAdd', { object });
+    for (const item of objects) {
+      switch (item.type) {
+        case 'body':
+          if ((item as MatterBody).parent !== item) {
+            Common.warn(
+              'Composite.add: skipped adding a compound body part (you must add its parent instead)',
+            );
+            break;
+          }
+          if (!composite.bodies.includes(item as MatterBody)) composite.bodies.push(item as MatterBody);
+          break;
+        case 'constraint':
+          if (!composite.constraints.includes(item as MatterComposite['constraints'][number]))
+            composite.constraints.push(item as MatterComposite['constraints'][number]);
+          break;
+        case 'composite':
+          if (item !== composite && !composite.composites.includes(item as MatterComposite)) {
+            (item as MatterComposite).parent = composite;
+            composite.composites.push(item as MatterComposite);
+          }
+          break;
+        case 'mouseConstraint':
+          Composite.add(composite, (item as unknown as { constraint: Member }).constraint);
+          break;
+      }
+    }
+    Composite.setModified(composite, true, true, false);
+    Events.trigger(composite, 'afterAdd', { object });
+    return composite;
+  },
+
+  /** Removes a body, constraint or composite (or an array), searching nested composites when `deep`. */
+  remove(composite: MatterComposite, object: Member | Member[], deep = false): MatterComposite {
+    const objects = Array.isArray(object) ? object : [object];
+    Events.trigger(composite, 'beforeRemove', { object });
+    for (const item of objects) {
+      const list =
+        item.type === 'body'
+          ? composite.bodies
+          : item.type === 'composite'
+            ? composite.composites
+            : item.type === 'mouseConstraint'
+              ? null
+              : composite.constraints;
+      if (item.type === 'mouseConstraint') {
+        Composite.remove(composite, (item as unknown as { constraint: Member }).constraint, deep);
+        continue;
+      }
+      const index = (list as Member[]).indexOf(item);
+      if (index !== -1) {
+        (list as Member[]).splice(index, 1);
+        if (item.type === 'body') Body.set(item as MatterBody, 'isSleeping', false);
+      }
+      if (deep) for (const child of composite.composites) Composite.remove(child, item, true);
+    }
+    Composite.setModified(composite, true, true, false);
+    Events.trigger(composite, 'afterRemove', { object });
+    return composite;
+  },
+
+  /** Every body in the composite and its descendants. */
+  allBodies(composite: MatterComposite): MatterBody[] {
+    return composite.bodies.concat(...composite.composites.map((c) => Composite.allBodies(c)));
+  },
+
+  allConstraints(composite: MatterComposite): MatterComposite['constraints'] {
+    return composite.constraints.concat(...composite.composites.map((c) => Composite.allConstraints(c)));
+  },
+
+  allComposites(composite: MatterComposite): MatterComposite[] {
+    return composite.composites.concat(...composite.composites.map((c) => Composite.allComposites(c)));
+  },
+
+  /** Removes everything (static bodies stay when `keepStatic`), in nested composites too when `deep`. */
+  clear(composite: MatterComposite, keepStatic = false, deep = false): MatterComposite {
+    if (deep) for (const child of composite.composites) Composite.clear(child, keepStatic, true);
+    composite.bodies = keepStatic ? composite.bodies.filter((b) => b.isStatic) : [];
+    composite.constraints = [];
+    composite.composites = [];
+    Composite.setModified(composite, true, true, false);
+    return composite;
+  },
+
+  /** The object of `type` with `id` in the composite or its descendants, or null. */
+  get(composite: MatterComposite, id: number, type: 'body' | 'constraint' | 'composite'): Member | null {
+    const list: Member[] =
+      type === 'body'
+        ? Composite.allBodies(composite)
+        : type === 'constraint'
+          ? Composite.allConstraints(composite)
+          : Composite.allComposites(composite);
+    return list.find((item) => item.id === id) ?? null;
+  },
+
+  translate(composite: MatterComposite, translation: MatterVector, recursive = true): MatterComposite {
+    for (const body of recursive ? Composite.allBodies(composite) : composite.bodies)
+      Body.translate(body, translation);
+    return composite;
+  },
+
+  rotate(
+    composite: MatterComposite,
+    rotation: number,
+    point: MatterVector,
+    recursive = true,
+  ): MatterComposite {
+    for (const body of recursive ? Composite.allBodies(composite) : composite.bodies)
+      Body.rotate(body, rotation, point);
+    return composite;
+  },
+
+  scale(
+    composite: MatterComposite,
+    scaleX: number,
+    scaleY: number,
+    point: MatterVector,
+    recursive = true,
+  ): MatterComposite {
+    for (const body of recursive ? Composite.allBodies(composite) : composite.bodies) {
+      const moved = {
+        x: point.x + (body.position.x - point.x) * scaleX,
+        y: point.y + (body.position.y - point.y) * scaleY,
+      };
+      Body.setPosition(body, moved);
+      Body.scale(body, scaleX, scaleY);
+    }
+    return composite;
+  },
+};
+
+/** matter.js 0.20's `World`: a composite, with the old names of Composite's functions. */
+export const World = {
+  create: Composite.create,
+  add: Composite.add,
+  remove: Composite.remove,
+  clear: Composite.clear,
+  addComposite: Composite.add,
+  addBody: Composite.add,
+  addConstraint: Composite.add,
+};

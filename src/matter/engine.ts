@@ -1,0 +1,335 @@
+import type { Body as FulcrumBody } from '../api/body';
+import type { ContactBeginEvent, ContactEndEvent } from '../api/events';
+import type { ShapeHandle } from '../api/shape';
+import { World as FulcrumWorld } from '../api/world';
+import { Shape } from '../geometry/shapes';
+import { type MatterBody, VELOCITY_TO_SI } from './body';
+import { Bounds } from './bounds';
+import { Common } from './common';
+import { Composite, type MatterComposite } from './composite';
+import { Events } from './events';
+import type { MatterVector } from './vector';
+import { Vertices } from './vertices';
+
+/*
+ * The engine runs a Fulcrum world in matter's own coordinates: pixels, y down (so Fulcrum's angles,
+ * counter-clockwise in the numbers, turn clockwise on the screen as matter's do). Fulcrum takes
+ * seconds where matter takes milliseconds: a matter acceleration of 1 px/ms² is 1e6 px/s², a matter
+ * velocity of 1 px per 1000/60 ms is 60 px/s.
+ */
+
+/** Fulcrum's tolerances for a world whose unit is matter's pixel: about 100 px to the metre. */
+const PIXELS_PER_METRE = 100;
+/** px/ms² to px/s² */
+const ACCELERATION_TO_SI = 1e6;
+
+/** A collision pair as matter.js reports it in its collision events. */
+export interface MatterPair {
+  id: string;
+  bodyA: MatterBody;
+  bodyB: MatterBody;
+  collision: {
+    collided: boolean;
+    bodyA: MatterBody;
+    bodyB: MatterBody;
+    parentA: MatterBody;
+    parentB: MatterBody;
+    normal: MatterVector;
+    tangent: MatterVector;
+    depth: number;
+    supports: MatterVector[];
+  };
+  isActive: boolean;
+  isSensor: boolean;
+  timeCreated: number;
+  timeUpdated: number;
+  friction: number;
+  frictionStatic: number;
+  restitution: number;
+  slop: number;
+}
+
+export interface MatterEngine {
+  world: MatterComposite;
+  gravity: { x: number; y: number; scale: number };
+  timing: { timeScale: number; timestamp: number; lastDelta: number; lastElapsed: number };
+  enableSleeping: boolean;
+  positionIterations: number;
+  velocityIterations: number;
+  constraintIterations: number;
+  pairs: { table: Record<string, MatterPair>; list: MatterPair[] };
+  events: Record<string, ((event: Record<string, unknown>) => void)[]> | null;
+  plugin: Record<string, unknown>;
+  /** the Fulcrum world underneath and what links it to the matter objects (not enumerable) */
+  _fulcrum: FulcrumLink;
+}
+
+interface FulcrumLink {
+  world: FulcrumWorld;
+  /** the matter bodies simulated, and their Fulcrum bodies */
+  bodies: Map<MatterBody, FulcrumBody>;
+  /** each part's outline in its parent's frame, to move its vertices after a step */
+  outlines: Map<MatterBody, MatterVector[]>;
+  begun: ContactBeginEvent[];
+  ended: ContactEndEvent[];
+}
+
+/** Fulcrum's linear damping that takes matter's `frictionAir` off the velocity every 1000/60 ms. */
+function dampingOf(frictionAir: number): number {
+  const kept = 1 - Math.min(Math.max(frictionAir, 0), 0.999);
+  return VELOCITY_TO_SI * (1 / kept - 1);
+}
+
+function pairId(a: MatterBody, b: MatterBody): string {
+  return a.id < b.id ? `A${a.id}B${b.id}` : `A${b.id}B${a.id}`;
+}
+
+/** The Fulcrum body of matter body `body`, built from its parts in its frame (centre of mass, angle). */
+function createFulcrumBody(link: FulcrumLink, body: MatterBody): FulcrumBody {
+  const damping = dampingOf(body.frictionAir);
+  const fulcrum = link.world.createBody({
+    type: body.isStatic ? 'static' : 'dynamic',
+    position: body.position,
+    angle: body.angle,
+    linearVelocity: { x: body.velocity.x * VELOCITY_TO_SI, y: body.velocity.y * VELOCITY_TO_SI },
+    angularVelocity: body.angularVelocity * VELOCITY_TO_SI,
+    linearDamping: damping,
+    angularDamping: damping,
+    fixedRotation: body.inertia === Number.POSITIVE_INFINITY,
+  });
+  const c = Math.cos(body.angle);
+  const s = Math.sin(body.angle);
+  const local = (p: MatterVector) => {
+    const dx = p.x - body.position.x;
+    const dy = p.y - body.position.y;
+    return { x: c * dx + s * dy, y: -s * dx + c * dy };
+  };
+  const parts = body.parts.length > 1 ? body.parts.slice(1) : [body];
+  for (const part of parts) {
+    const def = {
+      friction: part.friction,
+      restitution: part.restitution,
+      isSensor: part.isSensor,
+      filter: {
+        categoryBits: part.collisionFilter.category >>> 0,
+        maskBits: part.collisionFilter.mask >>> 0,
+        groupIndex: part.collisionFilter.group,
+      },
+      userData: part,
+    };
+    if (part.circleRadius > 0) {
+      // a true circle, of matter's mass (matter weighs the polygon it draws)
+      const density = part.mass / (Math.PI * part.circleRadius * part.circleRadius);
+      fulcrum.createShape(Shape.circle(part.circleRadius, local(part.position)), { ...def, density });
+      continue;
+    }
+    const outline = part.vertices.map(local);
+    const density = part.density;
+    if (outline.length <= 8) fulcrum.createShape(Shape.polygon(outline), { ...def, density });
+    else fulcrum.createShape(Shape.concave(outline), { ...def, density });
+  }
+  for (const part of body.parts) link.outlines.set(part, part.vertices.map(local));
+  Object.defineProperty(body, '_fulcrum', { value: fulcrum, writable: true, enumerable: false });
+  return fulcrum;
+}
+
+/** Creates the Fulcrum bodies of the world's new matter bodies and destroys those of removed ones. */
+function syncMembers(engine: MatterEngine): void {
+  const link = engine._fulcrum;
+  const present = new Set(Composite.allBodies(engine.world));
+  for (const [body, fulcrum] of link.bodies) {
+    if (present.has(body)) continue;
+    link.world.destroyBody(fulcrum);
+    link.bodies.delete(body);
+    for (const part of body.parts) link.outlines.delete(part);
+    body._fulcrum = null;
+  }
+  for (const body of present)
+    if (!link.bodies.has(body)) link.bodies.set(body, createFulcrumBody(link, body));
+  Composite.setModified(engine.world, false, false, true);
+}
+
+/** Writes the Fulcrum body's state back into the matter body: pose, vertices, bounds, velocities, sleep. */
+function readBack(link: FulcrumLink, body: MatterBody, fulcrum: FulcrumBody): void {
+  const centre = fulcrum.worldCenter;
+  const angle = fulcrum.angle;
+  const v = fulcrum.linearVelocity;
+  body.positionPrev = { x: body.position.x, y: body.position.y };
+  body.anglePrev = body.angle;
+  body.velocity = { x: v.x / VELOCITY_TO_SI, y: v.y / VELOCITY_TO_SI };
+  body.angularVelocity = fulcrum.angularVelocity / VELOCITY_TO_SI;
+  body.speed = Math.sqrt(body.velocity.x * body.velocity.x + body.velocity.y * body.velocity.y);
+  body.angularSpeed = Math.abs(body.angularVelocity);
+  const wasSleeping = body.isSleeping;
+  body.isSleeping = !fulcrum.isAwake && !body.isStatic;
+  if (body.isSleeping !== wasSleeping) Events.trigger(body, body.isSleeping ? 'sleepStart' : 'sleepEnd');
+  const turned = angle - body.angle;
+  const c = Math.cos(angle);
+  const s = Math.sin(angle);
+  for (const part of body.parts) {
+    const outline = link.outlines.get(part);
+    if (outline) {
+      for (let i = 0; i < outline.length; i++) {
+        const p = outline[i];
+        part.vertices[i].x = centre.x + c * p.x - s * p.y;
+        part.vertices[i].y = centre.y + s * p.x + c * p.y;
+      }
+    }
+    if (part !== body) {
+      const moved = Vertices.centre(part.vertices);
+      part.position.x = moved.x;
+      part.position.y = moved.y;
+      part.angle += turned;
+    }
+    Bounds.update(part.bounds, part.vertices, body.velocity);
+  }
+  body.position.x = centre.x;
+  body.position.y = centre.y;
+  body.angle = angle;
+}
+
+function makePair(event: ContactBeginEvent, timestamp: number): MatterPair {
+  const a = (event.shapeA as ShapeHandle).userData as MatterBody;
+  const b = (event.shapeB as ShapeHandle).userData as MatterBody;
+  const normal = { x: event.normal.x, y: event.normal.y };
+  return {
+    id: pairId(a, b),
+    bodyA: a,
+    bodyB: b,
+    collision: {
+      collided: true,
+      bodyA: a,
+      bodyB: b,
+      parentA: a.parent,
+      parentB: b.parent,
+      normal,
+      tangent: { x: -normal.y, y: normal.x },
+      depth: 0,
+      supports: event.points.map((p) => ({ x: p.x, y: p.y })),
+    },
+    isActive: true,
+    isSensor: a.isSensor || b.isSensor,
+    timeCreated: timestamp,
+    timeUpdated: timestamp,
+    friction: Math.min(a.friction, b.friction),
+    frictionStatic: Math.max(a.frictionStatic, b.frictionStatic),
+    restitution: Math.max(a.restitution, b.restitution),
+    slop: Math.max(a.slop, b.slop),
+  };
+}
+
+/** matter.js's `Engine`: creates and updates a world. A plain, mutable module object. */
+export const Engine = {
+  create(options: Partial<Omit<MatterEngine, '_fulcrum'>> = {}): MatterEngine {
+    const { world: given, ...settings } = options;
+    const engine = Common.extend(
+      {
+        world: given ?? Composite.create({ label: 'World' }),
+        gravity: { x: 0, y: 1, scale: 0.001 },
+        timing: { timeScale: 1, timestamp: 0, lastDelta: 0, lastElapsed: 0 },
+        enableSleeping: false,
+        positionIterations: 6,
+        velocityIterations: 4,
+        constraintIterations: 2,
+        pairs: { table: {}, list: [] },
+        events: null,
+        plugin: {},
+      },
+      settings,
+    ) as unknown as MatterEngine;
+    const world = new FulcrumWorld({
+      lengthUnitsPerMeter: PIXELS_PER_METRE,
+      enableSleep: engine.enableSleeping,
+    });
+    const link: FulcrumLink = { world, bodies: new Map(), outlines: new Map(), begun: [], ended: [] };
+    world.on('contactBegin', (event) => {
+      link.begun.push(event);
+    });
+    world.on('contactEnd', (event) => {
+      link.ended.push(event);
+    });
+    Object.defineProperty(engine, '_fulcrum', { value: link, enumerable: false });
+    return engine;
+  },
+
+  /**
+   * Moves the world on by `delta` milliseconds (default 1000/60) times `timing.timeScale`, and
+   * triggers matter's events in matter's order: beforeUpdate, collisionStart, collisionActive,
+   * collisionEnd, afterUpdate.
+   */
+  update(engine: MatterEngine, delta: number = Common._baseDelta): MatterEngine {
+    const link = engine._fulcrum;
+    const timing = engine.timing;
+    const started = Common.now();
+    const dt = delta * timing.timeScale;
+    timing.timestamp += dt;
+    timing.lastDelta = dt;
+    const event = { timestamp: timing.timestamp, delta: dt };
+    Events.trigger(engine, 'beforeUpdate', event);
+    if (engine.world.isModified || link.bodies.size === 0) syncMembers(engine);
+    const world = link.world;
+    world.enableSleep = engine.enableSleeping;
+    const g = engine.gravity;
+    world.gravity = { x: g.x * g.scale * ACCELERATION_TO_SI, y: g.y * g.scale * ACCELERATION_TO_SI };
+    for (const [body, fulcrum] of link.bodies) {
+      if (body.isStatic) continue;
+      if (body.force.x !== 0 || body.force.y !== 0) {
+        fulcrum.applyForce({ x: body.force.x * ACCELERATION_TO_SI, y: body.force.y * ACCELERATION_TO_SI });
+      }
+      if (body.torque !== 0) fulcrum.applyTorque(body.torque * ACCELERATION_TO_SI);
+    }
+    link.begun.length = 0;
+    link.ended.length = 0;
+    if (dt > 0) world.step(dt / 1000);
+    for (const [body, fulcrum] of link.bodies) if (!body.isStatic) readBack(link, body, fulcrum);
+
+    const pairs = engine.pairs;
+    const collisionStart: MatterPair[] = [];
+    const collisionActive: MatterPair[] = pairs.list.filter((pair) => pair.isActive);
+    const collisionEnd: MatterPair[] = [];
+    for (const begun of link.begun) {
+      const pair = makePair(begun, timing.timestamp);
+      const known = pairs.table[pair.id];
+      if (known) {
+        known.isActive = true;
+        known.timeUpdated = timing.timestamp;
+        known.collision = pair.collision;
+        collisionStart.push(known);
+      } else {
+        pairs.table[pair.id] = pair;
+        pairs.list.push(pair);
+        collisionStart.push(pair);
+      }
+    }
+    for (const ended of link.ended) {
+      const a = (ended.shapeA as ShapeHandle).userData as MatterBody;
+      const b = (ended.shapeB as ShapeHandle).userData as MatterBody;
+      const pair = pairs.table[pairId(a, b)];
+      if (!pair?.isActive) continue;
+      pair.isActive = false;
+      pair.timeUpdated = timing.timestamp;
+      collisionEnd.push(pair);
+    }
+    pairs.list = pairs.list.filter((pair) => pair.isActive);
+    for (const id of Object.keys(pairs.table)) if (!pairs.table[id].isActive) delete pairs.table[id];
+    const active = collisionActive.filter((pair) => pair.isActive);
+    if (collisionStart.length > 0)
+      Events.trigger(engine, 'collisionStart', { pairs: collisionStart, ...event });
+    if (active.length > 0) Events.trigger(engine, 'collisionActive', { pairs: active, ...event });
+    if (collisionEnd.length > 0) Events.trigger(engine, 'collisionEnd', { pairs: collisionEnd, ...event });
+    for (const body of link.bodies.keys()) {
+      body.force.x = 0;
+      body.force.y = 0;
+      body.torque = 0;
+    }
+    timing.lastElapsed = Common.now() - started;
+    Events.trigger(engine, 'afterUpdate', event);
+    return engine;
+  },
+
+  /** Forgets the world's collision pairs. */
+  clear(engine: MatterEngine): void {
+    engine.pairs.table = {};
+    engine.pairs.list = [];
+  },
+};

@@ -1,0 +1,120 @@
+import { createRequire } from 'node:module';
+import { describe, expect, it } from 'vitest';
+import FulcrumMatter from '../../src/matter/index';
+
+// the same matter.js program, run on real matter.js and on the layer
+const RealMatter = createRequire(import.meta.url)('matter-js');
+type M = typeof FulcrumMatter;
+const both: [string, M][] = [
+  ['matter-js', RealMatter as M],
+  ['fulcrum/matter', FulcrumMatter],
+];
+
+function run(Matter: M, engine: ReturnType<M['Engine']['create']>, updates: number) {
+  for (let i = 0; i < updates; i++) Matter.Engine.update(engine, 1000 / 60);
+}
+
+describe('fulcrum/matter runs matter.js programs as matter.js does', () => {
+  it('free fall: a box falls 1/2 g t^2 less what frictionAir takes, as on matter.js', () => {
+    const fallen: Record<string, number> = {};
+    for (const [name, Matter] of both) {
+      const engine = Matter.Engine.create();
+      const box = Matter.Bodies.rectangle(100, 0, 40, 40, { frictionAir: 0 });
+      Matter.Composite.add(engine.world, box);
+      run(Matter, engine, 60);
+      fallen[name] = box.position.y;
+      // gravity 0.001 px/ms^2: 1000 px/s^2, 500 px in 1 s
+      expect(Math.abs(box.position.y - 500) / 500, name).toBeLessThan(0.02);
+      expect(box.position.x).toBe(100);
+      // velocity in px per 1000/60 ms: g t = 1000 px/s / 60
+      expect(Math.abs(box.velocity.y - 1000 / 60) / (1000 / 60), name).toBeLessThan(0.02);
+    }
+    expect(Math.abs(fallen['fulcrum/matter'] - fallen['matter-js']) / 500).toBeLessThan(0.02);
+  });
+
+  it('a projectile keeps its horizontal speed in px per 1000/60 ms, whatever the delta', () => {
+    for (const [name, Matter] of both) {
+      const engine = Matter.Engine.create();
+      engine.gravity.y = 0;
+      const ball = Matter.Bodies.circle(0, 0, 10, { frictionAir: 0 });
+      Matter.Composite.add(engine.world, ball);
+      Matter.Body.setVelocity(ball, { x: 5, y: 0 });
+      for (let i = 0; i < 30; i++) Matter.Engine.update(engine, 1000 / 30);
+      // 30 updates of two base steps each: 60 base steps of 5 px
+      expect(Math.abs(ball.position.x - 300), name).toBeLessThan(3);
+      expect(ball.velocity.x, name).toBeCloseTo(5, 6);
+    }
+  });
+
+  it('frictionAir slows a body by the same share per 1000/60 ms as on matter.js', () => {
+    const speeds: number[] = [];
+    for (const [, Matter] of both) {
+      const engine = Matter.Engine.create();
+      engine.gravity.y = 0;
+      const box = Matter.Bodies.rectangle(0, 0, 20, 20, { frictionAir: 0.05 });
+      Matter.Composite.add(engine.world, box);
+      Matter.Body.setVelocity(box, { x: 10, y: 0 });
+      run(Matter, engine, 30);
+      speeds.push(box.velocity.x);
+    }
+    // 30 steps at 5 % each: 10 * 0.95^30 = 2.15
+    for (const speed of speeds) expect(Math.abs(speed - 10 * 0.95 ** 30)).toBeLessThan(0.1);
+  });
+
+  it('a box lands on static ground, rests on it, and the collision events come in matter order', () => {
+    for (const [name, Matter] of both) {
+      const engine = Matter.Engine.create();
+      const ground = Matter.Bodies.rectangle(200, 400, 400, 40, { isStatic: true });
+      const box = Matter.Bodies.rectangle(200, 300, 40, 40);
+      Matter.Composite.add(engine.world, [ground, box]);
+      const seen: string[] = [];
+      let startPair: { bodyA: unknown; bodyB: unknown } | null = null;
+      Matter.Events.on(engine, 'beforeUpdate', () => seen.push('before'));
+      Matter.Events.on(engine, 'collisionStart', (e: { pairs: { bodyA: unknown; bodyB: unknown }[] }) => {
+        seen.push('start');
+        startPair = e.pairs[0];
+      });
+      Matter.Events.on(engine, 'collisionActive', () => seen.push('active'));
+      Matter.Events.on(engine, 'collisionEnd', () => seen.push('end'));
+      Matter.Events.on(engine, 'afterUpdate', () => seen.push('after'));
+      run(Matter, engine, 120);
+      // resting with its bottom on the ground's top (y = 380), within matter's slop
+      expect(Math.abs(box.position.y - 360), name).toBeLessThan(1);
+      expect(
+        seen.filter((s) => s === 'start'),
+        name,
+      ).toHaveLength(1);
+      expect(seen.includes('end'), name).toBe(false);
+      const first = seen.indexOf('start');
+      expect(seen.slice(first - 1, first + 2), name).toEqual(['before', 'start', 'after']);
+      expect(seen.slice(first + 2, first + 5), name).toEqual(['before', 'active', 'after']);
+      expect([startPair!.bodyA, startPair!.bodyB].sort(), name).toEqual([ground, box].sort());
+    }
+  });
+
+  it('Bodies.circle is a true circle on Fulcrum: it rolls down a slope without the polygon bumps', () => {
+    const Matter = FulcrumMatter;
+    const engine = Matter.Engine.create();
+    const slope = Matter.Bodies.rectangle(300, 300, 800, 20, { isStatic: true, angle: 0.2 });
+    const ball = Matter.Bodies.circle(100, 200, 20, { friction: 0.5, frictionAir: 0 });
+    Matter.Composite.add(engine.world, [slope, ball]);
+    let landed = false;
+    let bumps = 0;
+    let last = 0;
+    for (let i = 0; i < 120; i++) {
+      Matter.Engine.update(engine);
+      const normalSpeed = -Math.sin(0.2) * ball.velocity.x + Math.cos(0.2) * ball.velocity.y;
+      if (landed && Math.abs(normalSpeed - last) > 0.05) bumps++;
+      if (!landed && Math.abs(normalSpeed) < 0.01 && ball.speed > 0.1) landed = true;
+      last = normalSpeed;
+    }
+    expect(landed).toBe(true);
+    expect(bumps).toBe(0);
+    expect(ball.speed).toBeGreaterThan(1);
+  });
+
+  it('Bodies.circle(x, y, NaN) is a FulcrumError naming the radius, where matter.js fails deep inside', () => {
+    expect(() => FulcrumMatter.Bodies.circle(0, 0, Number.NaN)).toThrow(/radius/);
+    expect(() => RealMatter.Bodies.circle(0, 0, Number.NaN)).toThrow(/Cannot read properties of undefined/);
+  });
+});
