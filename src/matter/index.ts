@@ -1,6 +1,6 @@
 /**
  * The matter.js layer (issue 21, in progress): matter's API over Fulcrum. So far the modules below;
- * Constraint, Runner, Render, Mouse, MouseConstraint, Query, Sleeping, Composites, Detector, Pairs,
+ * Constraint, Runner, Render, Mouse, MouseConstraint, Composites, Detector, Pairs,
  * Svg and Plugin are still to come, and the layer has no package entry point until they do.
  */
 import { Bodies } from './bodies';
@@ -10,6 +10,8 @@ import { Common } from './common';
 import { Composite, World } from './composite';
 import { Engine } from './engine';
 import { Events } from './events';
+import { Query } from './query';
+import { Sleeping } from './sleeping';
 import { Vector } from './vector';
 import { Vertices } from './vertices';
 
@@ -26,6 +28,8 @@ export const Matter = {
   Composite,
   Engine,
   Events,
+  Query,
+  Sleeping,
   Vector,
   Vertices,
   World,
@@ -39,5 +43,5 @@ export const Matter = {
   },
 };
 
-export { Bodies, Body, Bounds, Common, Composite, Engine, Events, Vector, Vertices, World };
+export { Bodies, Body, Bounds, Common, Composite, Engine, Events, Query, Sleeping, Vector, Vertices, World };
 export default Matter;

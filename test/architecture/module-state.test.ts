@@ -210,6 +210,8 @@ const ALLOWED = new Map<string, string>([
   ['src/matter/engine.ts:Engine', MATTER_MODULE],
   ['src/matter/events.ts:Events', MATTER_MODULE],
   ['src/matter/index.ts:Matter', MATTER_MODULE],
+  ['src/matter/query.ts:Query', MATTER_MODULE],
+  ['src/matter/sleeping.ts:Sleeping', MATTER_MODULE],
   ['src/matter/vector.ts:Vector', MATTER_MODULE],
   ['src/matter/vertices.ts:Vertices', MATTER_MODULE],
   ['src/api/snapshot.ts:CLASS_KEYS', 'the inverse of the frozen CLASSES table, built once and never written'],
