@@ -1,6 +1,7 @@
 import type { MatterBody } from './body';
 import { Body } from './body';
 import { Common } from './common';
+import type { MatterConstraint } from './constraint';
 import { Events } from './events';
 import type { MatterVector } from './vector';
 
@@ -11,7 +12,7 @@ export interface MatterComposite {
   parent: MatterComposite | null;
   isModified: boolean;
   bodies: MatterBody[];
-  constraints: { type: 'constraint'; id: number; [key: string]: unknown }[];
+  constraints: MatterConstraint[];
   composites: MatterComposite[];
   label: string;
   plugin: Record<string, unknown>;
@@ -22,7 +23,8 @@ export interface MatterComposite {
 type Member =
   | MatterBody
   | MatterComposite
-  | { type: 'constraint' | 'mouseConstraint'; id: number; [key: string]: unknown };
+  | MatterConstraint
+  | { type: 'mouseConstraint'; id: number; constraint: MatterConstraint };
 
 /** matter.js's `Composite` (and, with `World`, its 0.20 aliases). A plain, mutable module object. */
 export const Composite = {
@@ -73,8 +75,8 @@ export const Composite = {
           if (!composite.bodies.includes(item as MatterBody)) composite.bodies.push(item as MatterBody);
           break;
         case 'constraint':
-          if (!composite.constraints.includes(item as MatterComposite['constraints'][number]))
-            composite.constraints.push(item as MatterComposite['constraints'][number]);
+          if (!composite.constraints.includes(item as MatterConstraint))
+            composite.constraints.push(item as MatterConstraint);
           break;
         case 'composite':
           if (item !== composite && !composite.composites.includes(item as MatterComposite)) {

@@ -3,10 +3,12 @@ import type { ContactBeginEvent, ContactEndEvent } from '../api/events';
 import type { ShapeHandle } from '../api/shape';
 import { World as FulcrumWorld } from '../api/world';
 import { Shape } from '../geometry/shapes';
+import type { Joint } from '../joints/joint';
 import { type MatterBody, VELOCITY_TO_SI } from './body';
 import { Bounds } from './bounds';
 import { Common } from './common';
 import { Composite, type MatterComposite } from './composite';
+import type { MatterConstraint } from './constraint';
 import { Events } from './events';
 import type { MatterVector } from './vector';
 import { Vertices } from './vertices';
@@ -20,6 +22,13 @@ import { Vertices } from './vertices';
 
 /** Fulcrum's tolerances for a world whose unit is matter's pixel: about 100 px to the metre. */
 const PIXELS_PER_METRE = 100;
+/**
+ * How many of matter's constraint corrections a soft constraint's period reflects per update: the
+ * exponent that fits the periods matter.js 0.20 gives a mass on a spring of stiffness 0.005 to 0.05
+ * (34.4, 17.2 and 11.2 updates at 0.005, 0.02 and 0.05: 6.7, 6.7 and 6.3 times the stiffness for
+ * (omega dt)^2). Its own count of passes would be four.
+ */
+const SPRING_PASSES = 6.7;
 /** px/ms² to px/s² */
 const ACCELERATION_TO_SI = 1e6;
 
@@ -66,6 +75,10 @@ export interface MatterEngine {
 
 interface FulcrumLink {
   world: FulcrumWorld;
+  /** a static body without shapes at the origin: the world end of a constraint with one body */
+  anchor: FulcrumBody;
+  /** the matter constraints simulated, and their Fulcrum joints */
+  joints: Map<MatterConstraint, Joint>;
   /** the matter bodies simulated, and their Fulcrum bodies */
   bodies: Map<MatterBody, FulcrumBody>;
   /** each part's outline in its parent's frame, to move its vertices after a step */
@@ -133,6 +146,51 @@ function createFulcrumBody(link: FulcrumLink, body: MatterBody): FulcrumBody {
   return fulcrum;
 }
 
+/**
+ * The Fulcrum joint of a matter constraint, or null while one of its bodies is not in the world.
+ * Stiffness 0.9 and over is rigid: a revolute joint for length 0 (a pin), a distance joint (a rod)
+ * otherwise. Softer is a distance spring of rest length `length` with matter's period. matter moves
+ * the ends a share of the way to the rest length several times an update (constraint passes before
+ * and after the collisions, and the last update's correction carried over), which acts on the
+ * position's second difference like a spring with (omega dt)^2 = 1 - (1 - stiffness)^SPRING_PASSES,
+ * dt = 1000/60 ms, whatever the masses.
+ */
+function createJoint(link: FulcrumLink, constraint: MatterConstraint): Joint | null {
+  const end = (body: MatterBody | null, point: MatterVector) => {
+    if (body === null) return { fulcrum: link.anchor, local: { x: point.x, y: point.y } };
+    const fulcrum = link.bodies.get(body);
+    if (!fulcrum) return null;
+    const c = Math.cos(body.angle);
+    const s = Math.sin(body.angle);
+    return { fulcrum, local: { x: c * point.x + s * point.y, y: -s * point.x + c * point.y } };
+  };
+  const a = end(constraint.bodyA, constraint.pointA);
+  const b = end(constraint.bodyB, constraint.pointB);
+  if (!a || !b || a.fulcrum === b.fulcrum) return null;
+  const rigid = constraint.stiffness >= 0.9;
+  if (rigid && constraint.length === 0) {
+    return link.world.createJoint({
+      type: 'revolute',
+      bodyA: a.fulcrum,
+      bodyB: b.fulcrum,
+      localAnchorA: a.local,
+      localAnchorB: b.local,
+    });
+  }
+  const c = 1 - (1 - Math.min(constraint.stiffness, 1)) ** SPRING_PASSES;
+  return link.world.createJoint({
+    type: 'distance',
+    bodyA: a.fulcrum,
+    bodyB: b.fulcrum,
+    localAnchorA: a.local,
+    localAnchorB: b.local,
+    length: constraint.length,
+    enableSpring: !rigid,
+    hertz: rigid ? 0 : (Math.sqrt(c) * VELOCITY_TO_SI) / (2 * Math.PI),
+    dampingRatio: Math.min(constraint.damping, 1),
+  });
+}
+
 /** Creates the Fulcrum bodies of the world's new matter bodies and destroys those of removed ones. */
 function syncMembers(engine: MatterEngine): void {
   const link = engine._fulcrum;
@@ -144,8 +202,20 @@ function syncMembers(engine: MatterEngine): void {
     for (const part of body.parts) link.outlines.delete(part);
     body._fulcrum = null;
   }
-  for (const body of present)
+  for (const body of present) {
     if (!link.bodies.has(body)) link.bodies.set(body, createFulcrumBody(link, body));
+  }
+  const constraints = new Set(Composite.allConstraints(engine.world));
+  for (const [constraint, joint] of link.joints) {
+    if (constraints.has(constraint) && joint.isValid) continue;
+    if (joint.isValid) link.world.destroyJoint(joint);
+    link.joints.delete(constraint);
+  }
+  for (const constraint of constraints) {
+    if (link.joints.has(constraint)) continue;
+    const joint = createJoint(link, constraint);
+    if (joint) link.joints.set(constraint, joint);
+  }
   Composite.setModified(engine.world, false, false, true);
 }
 
@@ -186,6 +256,23 @@ function readBack(link: FulcrumLink, body: MatterBody, fulcrum: FulcrumBody): vo
   body.position.x = centre.x;
   body.position.y = centre.y;
   body.angle = angle;
+}
+
+/** Turns the offsets of the constraints that hold `body` by `angle`, as matter keeps them. */
+function turnConstraintPoints(engine: MatterEngine, body: MatterBody, angle: number): void {
+  const c = Math.cos(angle);
+  const s = Math.sin(angle);
+  for (const constraint of engine._fulcrum.joints.keys()) {
+    for (const [end, point] of [
+      [constraint.bodyA, constraint.pointA],
+      [constraint.bodyB, constraint.pointB],
+    ] as const) {
+      if (end !== body) continue;
+      const x = point.x;
+      point.x = c * x - s * point.y;
+      point.y = s * x + c * point.y;
+    }
+  }
 }
 
 function makePair(event: ContactBeginEvent, timestamp: number): MatterPair {
@@ -241,7 +328,15 @@ export const Engine = {
       lengthUnitsPerMeter: PIXELS_PER_METRE,
       enableSleep: engine.enableSleeping,
     });
-    const link: FulcrumLink = { world, bodies: new Map(), outlines: new Map(), begun: [], ended: [] };
+    const link: FulcrumLink = {
+      world,
+      anchor: world.createBody(),
+      joints: new Map(),
+      bodies: new Map(),
+      outlines: new Map(),
+      begun: [],
+      ended: [],
+    };
     world.on('contactBegin', (event) => {
       link.begun.push(event);
     });
@@ -281,7 +376,12 @@ export const Engine = {
     link.begun.length = 0;
     link.ended.length = 0;
     if (dt > 0) world.step(dt / 1000);
-    for (const [body, fulcrum] of link.bodies) if (!body.isStatic) readBack(link, body, fulcrum);
+    for (const [body, fulcrum] of link.bodies) {
+      if (body.isStatic) continue;
+      const turned = fulcrum.angle - body.angle;
+      readBack(link, body, fulcrum);
+      if (turned !== 0) turnConstraintPoints(engine, body, turned);
+    }
 
     const pairs = engine.pairs;
     const collisionStart: MatterPair[] = [];

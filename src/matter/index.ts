@@ -1,6 +1,6 @@
 /**
  * The matter.js layer (issue 21, in progress): matter's API over Fulcrum. So far the modules below;
- * Constraint, Runner, Render, Mouse, MouseConstraint, Composites, Detector, Pairs,
+ * Runner, Render, Mouse, MouseConstraint, Composites, Detector, Pairs,
  * Svg and Plugin are still to come, and the layer has no package entry point until they do.
  */
 import { Bodies } from './bodies';
@@ -8,6 +8,7 @@ import { Body } from './body';
 import { Bounds } from './bounds';
 import { Common } from './common';
 import { Composite, World } from './composite';
+import { Constraint } from './constraint';
 import { Engine } from './engine';
 import { Events } from './events';
 import { Query } from './query';
@@ -26,6 +27,7 @@ export const Matter = {
   Bounds,
   Common,
   Composite,
+  Constraint,
   Engine,
   Events,
   Query,
@@ -43,5 +45,5 @@ export const Matter = {
   },
 };
 
-export { Bodies, Body, Bounds, Common, Composite, Engine, Events, Query, Sleeping, Vector, Vertices, World };
+export { Bodies, Body, Bounds, Common, Composite, Constraint, Engine, Events, Query, Sleeping, Vector, Vertices, World };
 export default Matter;
