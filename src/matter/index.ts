@@ -45,5 +45,19 @@ export const Matter = {
   },
 };
 
-export { Bodies, Body, Bounds, Common, Composite, Constraint, Engine, Events, Query, Sleeping, Vector, Vertices, World };
+export {
+  Bodies,
+  Body,
+  Bounds,
+  Common,
+  Composite,
+  Constraint,
+  Engine,
+  Events,
+  Query,
+  Sleeping,
+  Vector,
+  Vertices,
+  World,
+};
 export default Matter;
