@@ -222,6 +222,30 @@ describe('Shape.chain: arguments', () => {
     expect(() => Shape.chain(floorPoints(1, 0, 2), { loop: 'yes' as unknown as boolean })).toThrow(/loop/);
   });
 
+  it('refuses a hand-made segment whose ends coincide or whose neighbour sits on its end', () => {
+    const world = new World();
+    const ground = world.createBody();
+    const p = Object.freeze({ x: 1, y: 1 });
+    const segment = (q: object) =>
+      Object.freeze({
+        type: 'segment',
+        kind: 2,
+        point1: p,
+        point2: Object.freeze({ x: 2, y: 1 }),
+        oneSided: true,
+        ghost1: null,
+        ghost2: null,
+        ...q,
+      });
+    expect(() => ground.createShape(segment({ point2: p }) as never)).toThrow(FulcrumError);
+    expect(() => ground.createShape(segment({ ghost1: p }) as never)).toThrow(FulcrumError);
+    expect(() =>
+      ground.createShape(segment({ oneSided: false, ghost1: Object.freeze({ x: 0, y: 0 }) }) as never),
+    ).toThrow(FulcrumError);
+    expect(ground.shapes).toHaveLength(0);
+    expect(ground.createShape(segment({}) as never)).toBeDefined();
+  });
+
   it('a dynamic body refuses a chain and is left as it was', () => {
     const world = new World();
     const body = world.createBody({ type: 'dynamic' });
