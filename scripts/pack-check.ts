@@ -17,10 +17,11 @@ const CORE_BUDGET = 60_000;
 /**
  * The size the core may not grow past while it is over the budget: over this the check fails,
  * between the two it warns. 69.4 kB when the check was written; 76.6 kB once issue 22's concave
- * decomposition, SVG paths and run-time shape editing and issue 24's layers were in (features the
- * core carries for every user, not growth of the engine's own code). Issue 23 holds the 60 kB goal.
+ * decomposition, SVG paths and run-time shape editing and issue 24's layers were in; 78.9 kB with
+ * issue 22's chains (the one-sided seam rule, its checks and casts) and svgShapes (features the core
+ * carries for every user, not growth of the engine's own code). Issue 23 holds the 60 kB goal.
  */
-const CORE_CEILING = 77_500;
+const CORE_CEILING = 79_500;
 
 const root = path.resolve(import.meta.dirname, '..');
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'fulcrum-pack-'));
