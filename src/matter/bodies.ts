@@ -4,12 +4,16 @@ import { Common } from './common';
 import type { MatterVector } from './vector';
 import { Vertices } from './vertices';
 
-type Options = Omit<BodyOptions, 'chamfer'> & {
+export type BodiesOptions = Omit<BodyOptions, 'chamfer'> & {
   chamfer?: { radius?: number | number[]; quality?: number; qualityMin?: number; qualityMax?: number };
 };
 
-function finish(options: Options | undefined, defaults: Options, points: MatterVector[]): MatterBody {
-  const settings = Common.extend({}, defaults, options) as Options;
+function finish(
+  options: BodiesOptions | undefined,
+  defaults: BodiesOptions,
+  points: MatterVector[],
+): MatterBody {
+  const settings = Common.extend({}, defaults, options) as BodiesOptions;
   let vertices = points;
   if (settings.chamfer) {
     const c = settings.chamfer;
@@ -25,7 +29,7 @@ function finish(options: Options | undefined, defaults: Options, points: MatterV
 /** matter.js's `Bodies`: factories of common bodies, at world positions in pixels. A plain, mutable module object. */
 export const Bodies = {
   /** A `width` by `height` rectangle centred on (x, y). */
-  rectangle(x: number, y: number, width: number, height: number, options?: Options): MatterBody {
+  rectangle(x: number, y: number, width: number, height: number, options?: BodiesOptions): MatterBody {
     return finish(options, { label: 'Rectangle Body', position: { x, y } }, [
       { x: 0, y: 0 },
       { x: width, y: 0 },
@@ -41,7 +45,7 @@ export const Bodies = {
     width: number,
     height: number,
     slope: number,
-    options?: Options,
+    options?: BodiesOptions,
   ): MatterBody {
     const top = slope * width * 0.5;
     const points =
@@ -64,7 +68,7 @@ export const Bodies = {
    * A circle of `radius` centred on (x, y). It collides as a true circle in Fulcrum; its `vertices`
    * are a polygon of up to `maxSides` (default 25) sides, as matter draws and queries it.
    */
-  circle(x: number, y: number, radius: number, options?: Options, maxSides = 25): MatterBody {
+  circle(x: number, y: number, radius: number, options?: BodiesOptions, maxSides = 25): MatterBody {
     if (typeof radius !== 'number' || !(radius > 0) || !Number.isFinite(radius)) {
       Shape.circle(radius); // the engine's own check and its FulcrumError
     }
@@ -78,13 +82,17 @@ export const Bodies = {
   },
 
   /** A regular polygon of `sides` sides (3 or more) inscribed in a circle of `radius`, centred on (x, y). */
-  polygon(x: number, y: number, sides: number, radius: number, options?: Options): MatterBody {
+  polygon(x: number, y: number, sides: number, radius: number, options?: BodiesOptions): MatterBody {
     if (sides < 3) return Bodies.circle(x, y, radius, options);
     const step = (2 * Math.PI) / sides;
     const points: MatterVector[] = [];
     for (let i = 0; i < sides; i++) {
       const a = step * 0.5 + step * i;
-      points.push({ x: radius * Math.cos(a), y: radius * Math.sin(a) });
+      // to 0.001 px, as matter writes them (through a path string): the same vertices, the same centre
+      points.push({
+        x: Number((radius * Math.cos(a)).toFixed(3)),
+        y: Number((radius * Math.sin(a)).toFixed(3)),
+      });
     }
     return finish(options, { label: 'Polygon Body', position: { x, y } }, points);
   },
@@ -98,7 +106,7 @@ export const Bodies = {
     x: number,
     y: number,
     vertexSets: MatterVector[] | MatterVector[][],
-    options?: Options,
+    options?: BodiesOptions,
   ): MatterBody {
     const sets = (Array.isArray(vertexSets[0]) ? vertexSets : [vertexSets]) as MatterVector[][];
     const { chamfer: _chamfer, ...settings } = options ?? {};

@@ -1,6 +1,6 @@
 /**
  * The matter.js layer (issue 21, in progress): matter's API over Fulcrum. So far the modules below;
- * Runner, Render, Mouse, MouseConstraint, Composites, Detector, Pairs,
+ * Runner, Render, Mouse, MouseConstraint, Detector, Pairs,
  * Svg and Plugin are still to come, and the layer has no package entry point until they do.
  */
 import { Bodies } from './bodies';
@@ -8,6 +8,7 @@ import { Body } from './body';
 import { Bounds } from './bounds';
 import { Common } from './common';
 import { Composite, World } from './composite';
+import { Composites } from './composites';
 import { Constraint } from './constraint';
 import { Engine } from './engine';
 import { Events } from './events';
@@ -27,6 +28,7 @@ export const Matter = {
   Bounds,
   Common,
   Composite,
+  Composites,
   Constraint,
   Engine,
   Events,
@@ -51,6 +53,7 @@ export {
   Bounds,
   Common,
   Composite,
+  Composites,
   Constraint,
   Engine,
   Events,

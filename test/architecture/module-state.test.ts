@@ -207,6 +207,7 @@ const ALLOWED = new Map<string, string>([
   ['src/matter/common.ts:Common', MATTER_MODULE],
   ['src/matter/composite.ts:Composite', MATTER_MODULE],
   ['src/matter/composite.ts:World', MATTER_MODULE],
+  ['src/matter/composites.ts:Composites', MATTER_MODULE],
   ['src/matter/constraint.ts:Constraint', MATTER_MODULE],
   ['src/matter/engine.ts:Engine', MATTER_MODULE],
   ['src/matter/events.ts:Events', MATTER_MODULE],
