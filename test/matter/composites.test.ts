@@ -95,7 +95,9 @@ describe('fulcrum/matter Composites lay out what matter.js lays out', () => {
       const a = ends(theirs);
       const b = ends(ours);
       expect(b.length).toBe(a.length);
-      b.forEach((row, i) => row.forEach((v, j) => expect(v).toBeCloseTo(a[i][j] as number, 9)));
+      for (let i = 0; i < b.length; i++) {
+        for (let j = 0; j < b[i].length; j++) expect(b[i][j]).toBeCloseTo(a[i][j], 9);
+      }
     }
   });
 
