@@ -61,7 +61,13 @@ export interface MatterPair {
 export interface MatterEngine {
   world: MatterComposite;
   gravity: { x: number; y: number; scale: number };
-  timing: { timeScale: number; timestamp: number; lastDelta: number; lastElapsed: number };
+  timing: {
+    timeScale: number;
+    timestamp: number;
+    lastDelta: number;
+    lastElapsed: number;
+    lastUpdatesPerFrame?: number;
+  };
   enableSleeping: boolean;
   positionIterations: number;
   velocityIterations: number;

@@ -1,6 +1,6 @@
 /**
  * The matter.js layer (issue 21, in progress): matter's API over Fulcrum. So far the modules below;
- * Runner, Render, Mouse, MouseConstraint, Detector, Pairs,
+ * Render, Mouse, MouseConstraint, Detector, Pairs,
  * Svg and Plugin are still to come, and the layer has no package entry point until they do.
  */
 import { Bodies } from './bodies';
@@ -13,6 +13,7 @@ import { Constraint } from './constraint';
 import { Engine } from './engine';
 import { Events } from './events';
 import { Query } from './query';
+import { Runner } from './runner';
 import { Sleeping } from './sleeping';
 import { Vector } from './vector';
 import { Vertices } from './vertices';
@@ -33,6 +34,7 @@ export const Matter = {
   Engine,
   Events,
   Query,
+  Runner,
   Sleeping,
   Vector,
   Vertices,
@@ -58,6 +60,7 @@ export {
   Engine,
   Events,
   Query,
+  Runner,
   Sleeping,
   Vector,
   Vertices,

@@ -213,6 +213,7 @@ const ALLOWED = new Map<string, string>([
   ['src/matter/events.ts:Events', MATTER_MODULE],
   ['src/matter/index.ts:Matter', MATTER_MODULE],
   ['src/matter/query.ts:Query', MATTER_MODULE],
+  ['src/matter/runner.ts:Runner', MATTER_MODULE],
   ['src/matter/sleeping.ts:Sleeping', MATTER_MODULE],
   ['src/matter/vector.ts:Vector', MATTER_MODULE],
   ['src/matter/vertices.ts:Vertices', MATTER_MODULE],
