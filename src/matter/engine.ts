@@ -4,11 +4,12 @@ import type { ShapeHandle } from '../api/shape';
 import { World as FulcrumWorld } from '../api/world';
 import { Shape } from '../geometry/shapes';
 import type { Joint } from '../joints/joint';
+import { MouseJoint } from '../joints/mouse-joint';
 import { type MatterBody, VELOCITY_TO_SI } from './body';
 import { Bounds } from './bounds';
 import { Common } from './common';
 import { Composite, type MatterComposite } from './composite';
-import type { MatterConstraint } from './constraint';
+import { Constraint, type MatterConstraint } from './constraint';
 import { Events } from './events';
 import type { MatterVector } from './vector';
 import { Vertices } from './vertices';
@@ -79,12 +80,18 @@ export interface MatterEngine {
   _fulcrum: FulcrumLink;
 }
 
+interface JointRecord {
+  joint: Joint | null;
+  bodyA: MatterBody | null;
+  bodyB: MatterBody | null;
+}
+
 interface FulcrumLink {
   world: FulcrumWorld;
   /** a static body without shapes at the origin: the world end of a constraint with one body */
   anchor: FulcrumBody;
-  /** the matter constraints simulated, and their Fulcrum joints */
-  joints: Map<MatterConstraint, Joint>;
+  /** the world's matter constraints, each with its Fulcrum joint (null while an end has no body in the world) and the bodies it was made for */
+  joints: Map<MatterConstraint, JointRecord>;
   /** the matter bodies simulated, and their Fulcrum bodies */
   bodies: Map<MatterBody, FulcrumBody>;
   /** each part's outline in its parent's frame, to move its vertices after a step */
@@ -174,6 +181,21 @@ function createJoint(link: FulcrumLink, constraint: MatterConstraint): Joint | n
   const b = end(constraint.bodyB, constraint.pointB);
   if (!a || !b || a.fulcrum === b.fulcrum) return null;
   const rigid = constraint.stiffness >= 0.9;
+  const c = 1 - (1 - Math.min(constraint.stiffness, 1)) ** SPRING_PASSES;
+  const hertz = (Math.sqrt(c) * VELOCITY_TO_SI) / (2 * Math.PI);
+  if (constraint.bodyA === null && constraint.bodyB !== null && !rigid && constraint.length < 1) {
+    // a soft pull of a body to a world point that moves (a mouse constraint's): a mouse joint,
+    // whose target follows pointA (see syncConstraints)
+    return link.world.createJoint({
+      type: 'mouse',
+      body: b.fulcrum,
+      target: Constraint.pointBWorld(constraint),
+      hertz,
+      // a hundred times the body's weight under matter's default gravity (1000 px/s²): the pull is
+      // the spring's, not a cap's
+      maxForce: 1e5 * Math.max(b.fulcrum.mass, 1e-6),
+    });
+  }
   if (rigid && constraint.length === 0) {
     return link.world.createJoint({
       type: 'revolute',
@@ -183,7 +205,6 @@ function createJoint(link: FulcrumLink, constraint: MatterConstraint): Joint | n
       localAnchorB: b.local,
     });
   }
-  const c = 1 - (1 - Math.min(constraint.stiffness, 1)) ** SPRING_PASSES;
   return link.world.createJoint({
     type: 'distance',
     bodyA: a.fulcrum,
@@ -192,7 +213,7 @@ function createJoint(link: FulcrumLink, constraint: MatterConstraint): Joint | n
     localAnchorB: b.local,
     length: constraint.length,
     enableSpring: !rigid,
-    hertz: rigid ? 0 : (Math.sqrt(c) * VELOCITY_TO_SI) / (2 * Math.PI),
+    hertz: rigid ? 0 : hertz,
     dampingRatio: Math.min(constraint.damping, 1),
   });
 }
@@ -212,17 +233,36 @@ function syncMembers(engine: MatterEngine): void {
     if (!link.bodies.has(body)) link.bodies.set(body, createFulcrumBody(link, body));
   }
   const constraints = new Set(Composite.allConstraints(engine.world));
-  for (const [constraint, joint] of link.joints) {
-    if (constraints.has(constraint) && joint.isValid) continue;
-    if (joint.isValid) link.world.destroyJoint(joint);
+  for (const [constraint, record] of link.joints) {
+    if (constraints.has(constraint)) continue;
+    if (record.joint?.isValid) link.world.destroyJoint(record.joint);
     link.joints.delete(constraint);
   }
   for (const constraint of constraints) {
-    if (link.joints.has(constraint)) continue;
-    const joint = createJoint(link, constraint);
-    if (joint) link.joints.set(constraint, joint);
+    if (!link.joints.has(constraint)) link.joints.set(constraint, { joint: null, bodyA: null, bodyB: null });
   }
+  // a joint goes with a destroyed body: syncConstraints makes it again if its bodies are back
+  for (const record of link.joints.values()) if (record.joint && !record.joint.isValid) record.joint = null;
   Composite.setModified(engine.world, false, false, true);
+}
+
+/**
+ * Keeps each constraint's joint in step with it before an update: made again when its bodies
+ * changed (a mouse constraint grabbing or letting go), a mouse joint's target moved to `pointA`.
+ */
+function syncConstraints(link: FulcrumLink): void {
+  for (const [constraint, record] of link.joints) {
+    if (record.joint !== null && (record.bodyA !== constraint.bodyA || record.bodyB !== constraint.bodyB)) {
+      if (record.joint.isValid) link.world.destroyJoint(record.joint);
+      record.joint = null;
+    }
+    if (record.joint === null && (constraint.bodyA !== null || constraint.bodyB !== null)) {
+      record.joint = createJoint(link, constraint);
+      record.bodyA = constraint.bodyA;
+      record.bodyB = constraint.bodyB;
+    }
+    if (record.joint instanceof MouseJoint) record.joint.setTarget(constraint.pointA);
+  }
 }
 
 /** Writes the Fulcrum body's state back into the matter body: pose, vertices, bounds, velocities, sleep. */
@@ -368,6 +408,7 @@ export const Engine = {
     const event = { timestamp: timing.timestamp, delta: dt };
     Events.trigger(engine, 'beforeUpdate', event);
     if (engine.world.isModified || link.bodies.size === 0) syncMembers(engine);
+    syncConstraints(link);
     const world = link.world;
     world.enableSleep = engine.enableSleeping;
     const g = engine.gravity;

@@ -1,6 +1,6 @@
 /**
  * The matter.js layer (issue 21, in progress): matter's API over Fulcrum. So far the modules below;
- * Render, Mouse, MouseConstraint, Detector, Pairs,
+ * Render, Detector, Pairs,
  * Svg and Plugin are still to come, and the layer has no package entry point until they do.
  */
 import { Bodies } from './bodies';
@@ -12,6 +12,8 @@ import { Composites } from './composites';
 import { Constraint } from './constraint';
 import { Engine } from './engine';
 import { Events } from './events';
+import { Mouse } from './mouse';
+import { MouseConstraint } from './mouse-constraint';
 import { Query } from './query';
 import { Runner } from './runner';
 import { Sleeping } from './sleeping';
@@ -33,6 +35,8 @@ export const Matter = {
   Constraint,
   Engine,
   Events,
+  Mouse,
+  MouseConstraint,
   Query,
   Runner,
   Sleeping,
@@ -59,6 +63,8 @@ export {
   Constraint,
   Engine,
   Events,
+  Mouse,
+  MouseConstraint,
   Query,
   Runner,
   Sleeping,

@@ -212,6 +212,8 @@ const ALLOWED = new Map<string, string>([
   ['src/matter/engine.ts:Engine', MATTER_MODULE],
   ['src/matter/events.ts:Events', MATTER_MODULE],
   ['src/matter/index.ts:Matter', MATTER_MODULE],
+  ['src/matter/mouse.ts:Mouse', MATTER_MODULE],
+  ['src/matter/mouse-constraint.ts:MouseConstraint', MATTER_MODULE],
   ['src/matter/query.ts:Query', MATTER_MODULE],
   ['src/matter/runner.ts:Runner', MATTER_MODULE],
   ['src/matter/sleeping.ts:Sleeping', MATTER_MODULE],

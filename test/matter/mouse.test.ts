@@ -1,0 +1,69 @@
+import { createRequire } from 'node:module';
+import { describe, expect, it } from 'vitest';
+import FulcrumMatter from '../../src/matter/index';
+
+const RealMatter = createRequire(import.meta.url)('matter-js');
+type M = typeof FulcrumMatter;
+
+/** A stand-in for a canvas of 800 by 600 at the page's origin: it keeps the listeners it is given. */
+function fakeCanvas() {
+  const listeners = new Map<string, ((event: unknown) => void)[]>();
+  return {
+    width: 800,
+    height: 600,
+    clientWidth: 800,
+    clientHeight: 600,
+    getBoundingClientRect: () => ({ left: 0, top: 0 }),
+    getAttribute: () => null,
+    addEventListener(type: string, listener: (event: unknown) => void) {
+      listeners.set(type, [...(listeners.get(type) ?? []), listener]);
+    },
+    removeEventListener() {},
+    fire(type: string, x: number, y: number) {
+      for (const listener of listeners.get(type) ?? [])
+        listener({ pageX: x, pageY: y, button: 0, preventDefault() {} });
+    },
+  };
+}
+
+// matter.js reads the page's scroll from window and document: a page that has not scrolled
+const page = globalThis as unknown as Record<string, unknown>;
+page.window ??= { pageXOffset: 0, pageYOffset: 0 };
+page.document ??= { documentElement: { scrollLeft: 0, scrollTop: 0 }, body: { scrollLeft: 0, scrollTop: 0 } };
+
+describe('fulcrum/matter Mouse and MouseConstraint', () => {
+  it('a drag lifts the box under the mouse toward the pointer, as on matter.js, with the drag events', () => {
+    for (const [name, Matter] of [
+      ['matter-js', RealMatter as M],
+      ['fulcrum/matter', FulcrumMatter],
+    ] as const) {
+      const engine = Matter.Engine.create();
+      const ground = Matter.Bodies.rectangle(400, 590, 800, 20, { isStatic: true });
+      const box = Matter.Bodies.rectangle(400, 560, 40, 40);
+      const canvas = fakeCanvas();
+      const mouse = Matter.Mouse.create(canvas as never);
+      const drag = Matter.MouseConstraint.create(engine, { mouse });
+      Matter.Composite.add(engine.world, [ground, box, drag as never]);
+      const seen: string[] = [];
+      Matter.Events.on(drag, 'startdrag', () => seen.push('start'));
+      Matter.Events.on(drag, 'enddrag', () => seen.push('end'));
+      Matter.Events.on(drag, 'mousedown', () => seen.push('down'));
+      for (let i = 0; i < 30; i++) Matter.Engine.update(engine);
+      canvas.fire('mousedown', 400, 560);
+      Matter.Engine.update(engine);
+      // the pointer goes up 200 px and stays there for 2 s
+      for (let i = 1; i <= 20; i++) {
+        canvas.fire('mousemove', 400, 560 - 10 * i);
+        Matter.Engine.update(engine);
+      }
+      for (let i = 0; i < 120; i++) Matter.Engine.update(engine);
+      // hanging from the pointer at its centre, the box sags a little under its weight
+      expect(Math.abs(box.position.x - 400), name).toBeLessThan(5);
+      expect(Math.abs(box.position.y - 360), name).toBeLessThan(25);
+      canvas.fire('mouseup', 400, 360);
+      for (let i = 0; i < 120; i++) Matter.Engine.update(engine);
+      expect(Math.abs(box.position.y - 560), name).toBeLessThan(2);
+      expect(seen, name).toEqual(['start', 'down', 'end']);
+    }
+  });
+});
