@@ -1,6 +1,6 @@
 /**
  * The matter.js layer (issue 21, in progress): matter's API over Fulcrum. So far the modules below;
- * Render, Detector, Pairs,
+ * Detector, Pairs,
  * Svg and Plugin are still to come, and the layer has no package entry point until they do.
  */
 import { Bodies } from './bodies';
@@ -15,6 +15,7 @@ import { Events } from './events';
 import { Mouse } from './mouse';
 import { MouseConstraint } from './mouse-constraint';
 import { Query } from './query';
+import { Render } from './render';
 import { Runner } from './runner';
 import { Sleeping } from './sleeping';
 import { Vector } from './vector';
@@ -38,6 +39,7 @@ export const Matter = {
   Mouse,
   MouseConstraint,
   Query,
+  Render,
   Runner,
   Sleeping,
   Vector,
@@ -66,6 +68,7 @@ export {
   Mouse,
   MouseConstraint,
   Query,
+  Render,
   Runner,
   Sleeping,
   Vector,

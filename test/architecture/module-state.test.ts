@@ -215,6 +215,7 @@ const ALLOWED = new Map<string, string>([
   ['src/matter/mouse.ts:Mouse', MATTER_MODULE],
   ['src/matter/mouse-constraint.ts:MouseConstraint', MATTER_MODULE],
   ['src/matter/query.ts:Query', MATTER_MODULE],
+  ['src/matter/render.ts:Render', MATTER_MODULE],
   ['src/matter/runner.ts:Runner', MATTER_MODULE],
   ['src/matter/sleeping.ts:Sleeping', MATTER_MODULE],
   ['src/matter/vector.ts:Vector', MATTER_MODULE],
