@@ -200,15 +200,19 @@ export const Common = {
     return out;
   },
 
-  /** A function that calls `funcs` in order with the same arguments and returns the last result. */
+  /**
+   * A function that calls `funcs` in order with its arguments, each with the last defined result so
+   * far as `this` (as matter chains them: a hook after Engine.update gets the engine as `this`), and
+   * returns that last result.
+   */
   chain(...funcs: ((...args: unknown[]) => unknown)[]): (...args: unknown[]) => unknown {
-    const chained = function chained(this: unknown, ...args: unknown[]) {
-      let result: unknown;
+    const chained = (...args: unknown[]) => {
+      let last: unknown;
       for (const fn of funcs) {
-        const value = fn.apply(this, args);
-        if (value !== undefined) result = value;
+        const value = fn.apply(last, args);
+        if (value !== undefined) last = value;
       }
-      return result;
+      return last;
     };
     (chained as unknown as { _chained: unknown[] })._chained = funcs;
     return chained;

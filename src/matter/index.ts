@@ -1,7 +1,6 @@
 /**
- * The matter.js layer (issue 21, in progress): matter's API over Fulcrum. So far the modules below;
- * Detector, Pairs,
- * Svg and Plugin are still to come, and the layer has no package entry point until they do.
+ * The matter.js layer (issue 21, in progress): matter's API over Fulcrum, the modules of matter 0.20
+ * that programs use. Not yet an entry point of the package (see the issue's notes for what is left).
  */
 import { Bodies } from './bodies';
 import { Body } from './body';
@@ -10,14 +9,17 @@ import { Common } from './common';
 import { Composite, World } from './composite';
 import { Composites } from './composites';
 import { Constraint } from './constraint';
+import { Detector, Pairs } from './detector';
 import { Engine } from './engine';
 import { Events } from './events';
 import { Mouse } from './mouse';
 import { MouseConstraint } from './mouse-constraint';
+import { type MatterPlugin, Plugin } from './plugin';
 import { Query } from './query';
 import { Render } from './render';
 import { Runner } from './runner';
 import { Sleeping } from './sleeping';
+import { Svg } from './svg';
 import { Vector } from './vector';
 import { Vertices } from './vertices';
 
@@ -34,17 +36,25 @@ export const Matter = {
   Composite,
   Composites,
   Constraint,
+  Detector,
   Engine,
   Events,
   Mouse,
   MouseConstraint,
+  Pairs,
+  Plugin,
   Query,
   Render,
   Runner,
   Sleeping,
+  Svg,
   Vector,
   Vertices,
   World,
+  /** Installs plugins (objects, or names registered with Plugin.register) on the Matter namespace, each once. */
+  use(...plugins: (MatterPlugin | string)[]): void {
+    Plugin.use(Matter as unknown as { used?: string[] }, plugins);
+  },
   /** Makes the function at `path` (e.g. 'Engine.update') call `func` first; returns the new function. */
   before(path: string, func: Fn): unknown {
     return Common.chainPathBefore(Matter as unknown as Record<string, unknown>, path, func);
@@ -63,14 +73,18 @@ export {
   Composite,
   Composites,
   Constraint,
+  Detector,
   Engine,
   Events,
   Mouse,
   MouseConstraint,
+  Pairs,
+  Plugin,
   Query,
   Render,
   Runner,
   Sleeping,
+  Svg,
   Vector,
   Vertices,
   World,
