@@ -74,6 +74,32 @@ const renderInNode = `function renderInNode(fulcrum, render) {
   throw new Error('new Render() in Node did not throw');
 }`;
 
+/** fulcrum/matter: a matter.js program (pixels, y down, milliseconds) falls and lands as on matter.js. */
+const helloMatter = `function helloMatter(Matter) {
+  const engine = Matter.Engine.create();
+  const ground = Matter.Bodies.rectangle(400, 610, 810, 60, { isStatic: true });
+  const box = Matter.Bodies.rectangle(400, 200, 40, 40, { frictionAir: 0 });
+  Matter.Composite.add(engine.world, [ground, box]);
+  for (let i = 0; i < 30; i++) Matter.Engine.update(engine, 1000 / 60);
+  const fallen = box.position.y - 200;
+  for (let i = 0; i < 150; i++) Matter.Engine.update(engine, 1000 / 60);
+  const problems = [];
+  // gravity 0.001 px/ms^2: 1000 px/s^2, 125 px in 0.5 s
+  if (!(Math.abs(fallen - 125) < 4)) problems.push('in 0.5 s the box fell ' + fallen + ' px, free fall says 125');
+  if (!(Math.abs(box.position.y - 560) < 1)) problems.push('after 3 s the box is at y = ' + box.position.y + ', resting on the ground means 560');
+  if (typeof Matter.use !== 'function' || typeof Matter.Render.create !== 'function') problems.push('Matter.use or Matter.Render is missing');
+  if (problems.length > 0) throw new Error('hello matter: ' + problems.join('; '));
+  return 'fulcrum/matter: fell ' + fallen.toFixed(1) + ' px in 0.5 s (free fall 125), rests at y = ' + box.position.y.toFixed(2);
+}`;
+
+const typedMatter = `import Matter, { Bodies, Composite, Engine } from 'fulcrum/matter';
+const engine = Engine.create();
+const box = Bodies.rectangle(0, 0, 40, 40);
+Composite.add(engine.world, box);
+Matter.Engine.update(engine, 1000 / 60);
+export const y: number = box.position.y;
+`;
+
 const typedHello = `import { type Body, FulcrumError, Shape, World, type WorldDef } from 'fulcrum';
 import { Camera, type CameraView, Render, type RenderOptions, Runner } from 'fulcrum/render';
 
@@ -249,6 +275,8 @@ async function main() {
   console.log(
     `min+gzip of ${core.join(' + ')}: ${kB(gzipped)} (budget ${kB(CORE_BUDGET)}; minified ${kB(code.length)})`,
   );
+  const matter = fs.readFileSync(path.join(dist, 'matter.js'));
+  console.log(`min+gzip of fulcrum/matter over the core: ${kB(zlib.gzipSync(matter, { level: 9 }).length)}`);
   const global = fs.readFileSync(path.join(dist, 'fulcrum.global.js'));
   console.log(
     `min+gzip of fulcrum.global.js (engine and render): ${kB(zlib.gzipSync(global, { level: 9 }).length)}`,
@@ -257,14 +285,14 @@ async function main() {
   step('ESM (hello.mjs)');
   fs.writeFileSync(
     path.join(app, 'hello.mjs'),
-    `import * as fulcrum from 'fulcrum';\nimport * as render from 'fulcrum/render';\n${helloWorld}\n${renderInNode}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\n`,
+    `import * as fulcrum from 'fulcrum';\nimport * as render from 'fulcrum/render';\nimport Matter from 'fulcrum/matter';\n${helloWorld}\n${renderInNode}\n${helloMatter}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\nconsole.log(helloMatter(Matter));\n`,
   );
   console.log(run('node', ['hello.mjs'], app).trim());
 
   step('CommonJS (hello.cjs)');
   fs.writeFileSync(
     path.join(app, 'hello.cjs'),
-    `const fulcrum = require('fulcrum');\nconst render = require('fulcrum/render');\n${helloWorld}\n${renderInNode}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\n`,
+    `const fulcrum = require('fulcrum');\nconst render = require('fulcrum/render');\nconst Matter = require('fulcrum/matter');\n${helloWorld}\n${renderInNode}\n${helloMatter}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\nconsole.log(helloMatter(Matter));\n`,
   );
   console.log(run('node', ['hello.cjs'], app).trim());
 
@@ -272,6 +300,7 @@ async function main() {
   const tsc = path.join(root, 'node_modules', 'typescript', 'bin', 'tsc');
   fs.writeFileSync(path.join(app, 'hello.ts'), typedHello);
   fs.writeFileSync(path.join(app, 'hello-cjs.cts'), typedCjsHello);
+  fs.writeFileSync(path.join(app, 'hello-matter.ts'), typedMatter);
   const examples = readmeExamples();
   const readme = examples.map((block, i) => {
     fs.writeFileSync(path.join(app, `readme-${i + 1}.ts`), block);
@@ -290,14 +319,26 @@ async function main() {
   const sets: [string, string[]][] = [
     [
       'node16',
-      ['--module', 'node16', '--moduleResolution', 'node16', 'hello.ts', 'hello-cjs.cts', ...readme],
+      [
+        '--module',
+        'node16',
+        '--moduleResolution',
+        'node16',
+        'hello.ts',
+        'hello-cjs.cts',
+        'hello-matter.ts',
+        ...readme,
+      ],
     ],
-    ['bundler', ['--module', 'esnext', '--moduleResolution', 'bundler', 'hello.ts', ...readme]],
+    [
+      'bundler',
+      ['--module', 'esnext', '--moduleResolution', 'bundler', 'hello.ts', 'hello-matter.ts', ...readme],
+    ],
   ];
   for (const [name, args] of sets) {
     run('node', [tsc, ...common, ...args], app);
     console.log(
-      `tsc --strict (${name}): hello.ts${name === 'node16' ? ', hello-cjs.cts' : ''} and ${readme.length} README example(s) typecheck`,
+      `tsc --strict (${name}): hello.ts${name === 'node16' ? ', hello-cjs.cts' : ''}, hello-matter.ts and ${readme.length} README example(s) typecheck`,
     );
   }
 

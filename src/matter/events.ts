@@ -4,14 +4,14 @@
  */
 type Callback = (event: Record<string, unknown>) => void;
 
-interface EventTarget {
+export interface MatterEventTarget {
   events?: Record<string, Callback[]> | null;
 }
 
 export const Events = {
   /** Calls `callback` on each of the space-separated `eventNames`; returns the callback. */
   on<E extends object = Record<string, unknown>>(
-    object: EventTarget,
+    object: MatterEventTarget,
     eventNames: string,
     callback: (event: E) => void,
   ): (event: E) => void {
@@ -26,7 +26,7 @@ export const Events = {
    * Removes `callback` from `eventNames` (space separated); without a callback, every callback of
    * those events; with no names, every callback of the object.
    */
-  off(object: EventTarget, eventNames?: string | Callback, callback?: Callback): void {
+  off(object: MatterEventTarget, eventNames?: string | Callback, callback?: Callback): void {
     if (!object.events) return;
     if (typeof eventNames === 'function') {
       callback = eventNames;
@@ -47,7 +47,7 @@ export const Events = {
    * Calls the callbacks of each of `eventNames` on `object` with a copy of `event` that also names
    * the event (`name`) and its `source`.
    */
-  trigger(object: EventTarget, eventNames: string, event?: Record<string, unknown>): void {
+  trigger(object: MatterEventTarget, eventNames: string, event?: Record<string, unknown>): void {
     const events = object.events;
     if (!events) return;
     for (const name of eventNames.split(' ')) {

@@ -89,4 +89,6 @@ export {
   Vertices,
   World,
 };
+/** `Matter.use`, `Matter.before` and `Matter.after` as named exports too, for `require('fulcrum/matter')`. */
+export const { use, before, after, name, version } = Matter;
 export default Matter;

@@ -1,5 +1,5 @@
 import { createRequire } from 'node:module';
-import { describe, expect, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import FulcrumMatter from '../../src/matter/index';
 
 const RealMatter = createRequire(import.meta.url)('matter-js');
@@ -26,10 +26,17 @@ function fakeCanvas() {
   };
 }
 
-// matter.js reads the page's scroll from window and document: a page that has not scrolled
+// matter.js reads the page's scroll from window and document: a page that has not scrolled, for
+// these tests only (other test files in the same worker rely on Node having no DOM)
 const page = globalThis as unknown as Record<string, unknown>;
-page.window ??= { pageXOffset: 0, pageYOffset: 0 };
-page.document ??= { documentElement: { scrollLeft: 0, scrollTop: 0 }, body: { scrollLeft: 0, scrollTop: 0 } };
+beforeAll(() => {
+  page.window = { pageXOffset: 0, pageYOffset: 0 };
+  page.document = { documentElement: { scrollLeft: 0, scrollTop: 0 }, body: { scrollLeft: 0, scrollTop: 0 } };
+});
+afterAll(() => {
+  delete page.window;
+  delete page.document;
+});
 
 describe('fulcrum/matter Mouse and MouseConstraint', () => {
   it('a drag lifts the box under the mouse toward the pointer, as on matter.js, with the drag events', () => {
