@@ -14,11 +14,20 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 
-const adapterPath = fileURLToPath(new URL('./adapters/fulcrum.ts', import.meta.url));
 const esbuild = createRequire(import.meta.url).resolve('esbuild/bin/esbuild');
 
 /** Bundles the adapter, imports the bundle and removes the file. */
-export async function importBundledFulcrum(): Promise<typeof import('./adapters/fulcrum')> {
+export function importBundledFulcrum(): Promise<typeof import('./adapters/fulcrum')> {
+  return importBundled('./adapters/fulcrum.ts');
+}
+
+/** The fulcrum/matter adapter, bundled as Fulcrum's is. */
+export function importBundledFulcrumMatter(): Promise<typeof import('./adapters/fulcrum-matter')> {
+  return importBundled('./adapters/fulcrum-matter.ts');
+}
+
+async function importBundled<T>(relative: string): Promise<T> {
+  const adapterPath = fileURLToPath(new URL(relative, import.meta.url));
   const outfile = join(tmpdir(), `fulcrum-bench-${process.pid}.mjs`);
   execFileSync(esbuild, [
     adapterPath,

@@ -1,6 +1,6 @@
 /** The engines the benchmark knows, how to load each adapter, and which npm package it measures. */
 import type { EngineAdapter } from './adapter';
-import { importBundledFulcrum } from './bundle';
+import { importBundledFulcrum, importBundledFulcrumMatter } from './bundle';
 
 export interface EngineEntry {
   id: string;
@@ -40,6 +40,12 @@ export const engines: EngineEntry[] = [
     label: 'matter-js',
     pkg: 'matter-js',
     load: async () => new (await import('./adapters/matter')).MatterAdapter(),
+  },
+  {
+    id: 'fulcrum-matter',
+    label: 'fulcrum/matter',
+    pkg: null,
+    load: async () => new (await importBundledFulcrumMatter()).FulcrumMatterAdapter(),
   },
   {
     id: 'planck',

@@ -25,7 +25,9 @@ import { shapeCentroid } from '../../scenes/mass';
 import type { Scene, SceneBody, SceneShape, V } from '../../scenes/types';
 import { type EngineAdapter, unsupportedJoint } from '../adapter';
 
-const { Bodies, Body, Composite, Constraint, Engine } = Matter;
+/** The part of the `Matter` namespace the adapter uses: matter-js's, or fulcrum/matter's. */
+export type MatterModule = Pick<typeof Matter, 'Bodies' | 'Body' | 'Composite' | 'Constraint' | 'Engine'>;
+
 const SCALE = 50;
 const JOINT_GROUP = -1;
 
@@ -48,7 +50,8 @@ interface Kinematic {
 const toPx = (p: V): V => ({ x: p.x * SCALE, y: -p.y * SCALE });
 
 /** a matter body for one shape, built in the scene body's frame (origin at 0, 0), px and y down */
-function part(shape: SceneShape): MatterBody {
+function part(M: MatterModule, shape: SceneShape): MatterBody {
+  const { Bodies, Body } = M;
   const options = {
     density: (shape.density ?? 1) / (SCALE * SCALE),
     friction: shape.friction ?? 0.6,
@@ -100,12 +103,13 @@ function part(shape: SceneShape): MatterBody {
   }
 }
 
-function createBody(b: SceneBody): Tracked {
+function createBody(M: MatterModule, b: SceneBody): Tracked {
+  const { Body } = M;
   if (b.shapes.length === 0) {
     if (b.type !== 'static') throw new Error('matter adapter: a moving body needs a shape');
     return { body: null, com: { x: 0, y: 0 } };
   }
-  const parts = b.shapes.map(part);
+  const parts = b.shapes.map((shape) => part(M, shape));
   // matter filters the parent bodies: a compound one takes its first shape's filter
   const body =
     parts.length === 1
@@ -138,6 +142,9 @@ function origin(t: Tracked, out: V): V {
 }
 
 export class MatterAdapter implements EngineAdapter {
+  /** `matter`: the Matter namespace to build with (matter-js by default; fulcrum/matter runs the same code) */
+  constructor(private readonly M: MatterModule = Matter) {}
+
   readonly settings =
     `1 m = ${SCALE} px, defaults (6 position, 4 velocity, 2 constraint iterations), frictionAir 0`;
   private engine: MatterEngine | null = null;
@@ -149,12 +156,13 @@ export class MatterAdapter implements EngineAdapter {
 
   build(scene: Scene): void {
     this.dispose();
+    const { Composite, Constraint, Engine } = this.M;
     const engine = Engine.create({
       enableSleeping: false,
       gravity: { x: (scene.gravity.x * SCALE) / 1000, y: (-scene.gravity.y * SCALE) / 1000, scale: 0.001 },
     });
     this.engine = engine;
-    this.tracked = scene.bodies.map(createBody);
+    this.tracked = scene.bodies.map((b) => createBody(this.M, b));
     this.kinematic = [];
     scene.bodies.forEach((b, i) => {
       if (b.type !== 'kinematic') return;
@@ -195,6 +203,7 @@ export class MatterAdapter implements EngineAdapter {
   }
 
   step(dt: number): void {
+    const { Body, Engine } = this.M;
     for (const k of this.kinematic) {
       const body = k.tracked.body!;
       k.x += k.vx * dt;
@@ -221,7 +230,7 @@ export class MatterAdapter implements EngineAdapter {
   }
 
   dispose(): void {
-    if (this.engine) Engine.clear(this.engine);
+    if (this.engine) this.M.Engine.clear(this.engine);
     this.engine = null;
     this.tracked = [];
     this.kinematic = [];

@@ -431,8 +431,10 @@ export const Engine = {
     }
 
     const pairs = engine.pairs;
+    // the pairs active before this update and still active after it: built only when listened to
+    const listensActive = (engine.events?.collisionActive?.length ?? 0) > 0;
+    const collisionActive: MatterPair[] = listensActive ? pairs.list.slice() : [];
     const collisionStart: MatterPair[] = [];
-    const collisionActive: MatterPair[] = pairs.list.filter((pair) => pair.isActive);
     const collisionEnd: MatterPair[] = [];
     for (const begun of link.begun) {
       const pair = makePair(begun, timing.timestamp);
@@ -451,18 +453,21 @@ export const Engine = {
     for (const ended of link.ended) {
       const a = (ended.shapeA as ShapeHandle).userData as MatterBody;
       const b = (ended.shapeB as ShapeHandle).userData as MatterBody;
-      const pair = pairs.table[pairId(a, b)];
+      const id = pairId(a, b);
+      const pair = pairs.table[id];
       if (!pair?.isActive) continue;
       pair.isActive = false;
       pair.timeUpdated = timing.timestamp;
       collisionEnd.push(pair);
+      delete pairs.table[id];
     }
-    pairs.list = pairs.list.filter((pair) => pair.isActive);
-    for (const id of Object.keys(pairs.table)) if (!pairs.table[id].isActive) delete pairs.table[id];
-    const active = collisionActive.filter((pair) => pair.isActive);
+    if (collisionEnd.length > 0) pairs.list = pairs.list.filter((pair) => pair.isActive);
     if (collisionStart.length > 0)
       Events.trigger(engine, 'collisionStart', { pairs: collisionStart, ...event });
-    if (active.length > 0) Events.trigger(engine, 'collisionActive', { pairs: active, ...event });
+    if (listensActive) {
+      const active = collisionActive.filter((pair) => pair.isActive);
+      if (active.length > 0) Events.trigger(engine, 'collisionActive', { pairs: active, ...event });
+    }
     if (collisionEnd.length > 0) Events.trigger(engine, 'collisionEnd', { pairs: collisionEnd, ...event });
     for (const body of link.bodies.keys()) {
       body.force.x = 0;
