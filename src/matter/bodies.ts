@@ -30,12 +30,25 @@ function finish(
 export const Bodies = {
   /** A `width` by `height` rectangle centred on (x, y). */
   rectangle(x: number, y: number, width: number, height: number, options?: BodiesOptions): MatterBody {
-    return finish(options, { label: 'Rectangle Body', position: { x, y } }, [
+    const body = finish(options, { label: 'Rectangle Body', position: { x, y } }, [
       { x: 0, y: 0 },
       { x: width, y: 0 },
       { x: width, y: height },
       { x: 0, y: height },
     ]);
+    // one chamfer radius on all four corners: the engine simulates a rounded box (or a capsule, or
+    // a circle) of exactly that shape rather than the many-cornered outline matter draws
+    const radius = options?.chamfer?.radius;
+    const r = Array.isArray(radius) ? (radius.every((v) => v === radius[0]) ? radius[0] : undefined) : radius;
+    if (options?.chamfer && (r ?? 8) > 0) {
+      Object.defineProperty(body, '_rounded', {
+        value: { halfWidth: width / 2, halfHeight: height / 2, radius: r ?? 8 },
+        writable: true,
+        enumerable: false,
+        configurable: true,
+      });
+    }
+    return body;
   },
 
   /** A trapezoid `width` wide at its base, its top `slope` times narrower on each side. */

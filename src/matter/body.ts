@@ -53,6 +53,8 @@ export interface MatterBody {
   deltaTime: number;
   /** the Fulcrum body that simulates it while it is in an engine's world (not enumerable) */
   _fulcrum?: FulcrumBody | null;
+  /** a chamfered rectangle's exact shape (Bodies.rectangle; not enumerable), until its vertices change */
+  _rounded?: { halfWidth: number; halfHeight: number; radius: number } | null;
 }
 
 /** What `Body.create` takes: any of a body's fields, and its outline as plain points. */
@@ -238,6 +240,7 @@ export const Body = {
 
   /** Replaces the body's outline (world points): its area, mass and inertia follow at its density. */
   setVertices(body: MatterBody, points: readonly MatterVector[]): void {
+    if (body._rounded) body._rounded = null;
     body.vertices =
       points.length > 0 && (points[0] as MatterVertex).body === body
         ? (points as MatterVertex[])

@@ -3,6 +3,7 @@ import type { ContactBeginEvent, ContactEndEvent } from '../api/events';
 import type { ShapeHandle } from '../api/shape';
 import { World as FulcrumWorld } from '../api/world';
 import { Shape } from '../geometry/shapes';
+import type { Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
 import { MouseJoint } from '../joints/mouse-joint';
 import { type MatterBody, VELOCITY_TO_SI } from './body';
@@ -110,6 +111,37 @@ function pairId(a: MatterBody, b: MatterBody): string {
   return a.id < b.id ? `A${a.id}B${b.id}` : `A${b.id}B${a.id}`;
 }
 
+type Rounded = { halfWidth: number; halfHeight: number; radius: number };
+
+/**
+ * A chamfered rectangle as the engine's exact shape, about its centre in its own frame: a rounded box,
+ * a capsule when the radius takes a whole side, a circle when it takes both.
+ */
+function roundedShape({ halfWidth, halfHeight, radius }: Rounded): Geometry {
+  const r = Math.min(radius, halfWidth, halfHeight);
+  const a = halfWidth - r;
+  const b = halfHeight - r;
+  const flat = 1e-9 * Math.max(halfWidth, halfHeight);
+  if (a <= flat && b <= flat) return Shape.circle(r);
+  if (b <= flat) return Shape.capsule({ x: -a, y: 0 }, { x: a, y: 0 }, r);
+  if (a <= flat) return Shape.capsule({ x: 0, y: -b }, { x: 0, y: b }, r);
+  return Shape.polygon(
+    [
+      { x: -a, y: -b },
+      { x: a, y: -b },
+      { x: a, y: b },
+      { x: -a, y: b },
+    ],
+    r,
+  );
+}
+
+/** The area of a rectangle whose corners are rounded with `radius`. */
+function roundedArea({ halfWidth, halfHeight, radius }: Rounded): number {
+  const r = Math.min(radius, halfWidth, halfHeight);
+  return 4 * halfWidth * halfHeight - (4 - Math.PI) * r * r;
+}
+
 /** The Fulcrum body of matter body `body`, built from its parts in its frame (centre of mass, angle). */
 function createFulcrumBody(link: FulcrumLink, body: MatterBody): FulcrumBody {
   const damping = dampingOf(body.frictionAir);
@@ -147,6 +179,13 @@ function createFulcrumBody(link: FulcrumLink, body: MatterBody): FulcrumBody {
       // a true circle, of matter's mass (matter weighs the polygon it draws)
       const density = part.mass / (Math.PI * part.circleRadius * part.circleRadius);
       fulcrum.createShape(Shape.circle(part.circleRadius, local(part.position)), { ...def, density });
+      continue;
+    }
+    if (part._rounded && body.parts.length === 1) {
+      fulcrum.createShape(roundedShape(part._rounded), {
+        ...def,
+        density: part.mass / roundedArea(part._rounded),
+      });
       continue;
     }
     const outline = part.vertices.map(local);

@@ -190,3 +190,24 @@ describe('fulcrum/matter constraints', () => {
     expect(Math.abs(fulcrum - matter) / matter).toBeLessThan(0.05);
   });
 });
+
+describe('fulcrum/matter chamfered rectangles', () => {
+  it('are the exact rounded shape underneath: a pill is a capsule, a rounded box a rounded polygon, both of matter mass', () => {
+    const Matter = FulcrumMatter;
+    const engine = Matter.Engine.create();
+    const ground = Matter.Bodies.rectangle(400, 610, 800, 60, { isStatic: true });
+    const pill = Matter.Bodies.rectangle(300, 500, 80, 20, { chamfer: { radius: 10 } });
+    const rounded = Matter.Bodies.rectangle(500, 500, 60, 40, { chamfer: { radius: 8 } });
+    Matter.Composite.add(engine.world, [ground, pill, rounded]);
+    for (let i = 0; i < 120; i++) Matter.Engine.update(engine);
+    const fulcrum = engine._fulcrum.bodies;
+    expect(fulcrum.get(pill)?.shapes[0].type).toBe('capsule');
+    expect(fulcrum.get(rounded)?.shapes[0].type).toBe('polygon');
+    for (const body of [pill, rounded]) {
+      expect(Math.abs((fulcrum.get(body)?.mass ?? 0) - body.mass) / body.mass).toBeLessThan(1e-9);
+    }
+    // lying on the ground's top (y = 580): the pill's centre its radius above it, the box half its height
+    expect(Math.abs(pill.position.y - 570)).toBeLessThan(0.5);
+    expect(Math.abs(rounded.position.y - 560)).toBeLessThan(0.5);
+  });
+});
