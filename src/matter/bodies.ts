@@ -1,4 +1,6 @@
+import { checkSize } from '../core/limits';
 import { Shape } from '../geometry/shapes';
+import { makeRot } from '../math/rot';
 import { Body, type BodyOptions, type MatterBody } from './body';
 import { Common } from './common';
 import type { MatterVector } from './vector';
@@ -82,9 +84,7 @@ export const Bodies = {
    * are a polygon of up to `maxSides` (default 25) sides, as matter draws and queries it.
    */
   circle(x: number, y: number, radius: number, options?: BodiesOptions, maxSides = 25): MatterBody {
-    if (typeof radius !== 'number' || !(radius > 0) || !Number.isFinite(radius)) {
-      Shape.circle(radius); // the engine's own check and its FulcrumError
-    }
+    checkSize('radius', radius);
     const sides = Math.ceil(Math.max(10, Math.min(maxSides, radius)));
     const body = Bodies.polygon(x, y, sides % 2 === 1 ? sides + 1 : sides, radius, {
       label: 'Circle Body',
@@ -102,10 +102,8 @@ export const Bodies = {
     for (let i = 0; i < sides; i++) {
       const a = step * 0.5 + step * i;
       // to 0.001 px, as matter writes them (through a path string): the same vertices, the same centre
-      points.push({
-        x: Number((radius * Math.cos(a)).toFixed(3)),
-        y: Number((radius * Math.sin(a)).toFixed(3)),
-      });
+      const { c, s } = makeRot(a);
+      points.push({ x: Number((radius * c).toFixed(3)), y: Number((radius * s).toFixed(3)) });
     }
     return finish(options, { label: 'Polygon Body', position: { x, y } }, points);
   },

@@ -6,6 +6,7 @@ import { Shape } from '../geometry/shapes';
 import type { Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
 import { MouseJoint } from '../joints/mouse-joint';
+import { makeRot } from '../math/rot';
 import { type MatterBody, VELOCITY_TO_SI } from './body';
 import { Bounds } from './bounds';
 import { Common } from './common';
@@ -155,8 +156,7 @@ function createFulcrumBody(link: FulcrumLink, body: MatterBody): FulcrumBody {
     angularDamping: damping,
     fixedRotation: body.inertia === Number.POSITIVE_INFINITY,
   });
-  const c = Math.cos(body.angle);
-  const s = Math.sin(body.angle);
+  const { c, s } = makeRot(body.angle);
   const local = (p: MatterVector) => {
     const dx = p.x - body.position.x;
     const dy = p.y - body.position.y;
@@ -212,8 +212,7 @@ function createJoint(link: FulcrumLink, constraint: MatterConstraint): Joint | n
     if (body === null) return { fulcrum: link.anchor, local: { x: point.x, y: point.y } };
     const fulcrum = link.bodies.get(body);
     if (!fulcrum) return null;
-    const c = Math.cos(body.angle);
-    const s = Math.sin(body.angle);
+    const { c, s } = makeRot(body.angle);
     return { fulcrum, local: { x: c * point.x + s * point.y, y: -s * point.x + c * point.y } };
   };
   const a = end(constraint.bodyA, constraint.pointA);
@@ -319,8 +318,7 @@ function readBack(link: FulcrumLink, body: MatterBody, fulcrum: FulcrumBody): vo
   body.isSleeping = !fulcrum.isAwake && !body.isStatic;
   if (body.isSleeping !== wasSleeping) Events.trigger(body, body.isSleeping ? 'sleepStart' : 'sleepEnd');
   const turned = angle - body.angle;
-  const c = Math.cos(angle);
-  const s = Math.sin(angle);
+  const { c, s } = makeRot(angle);
   for (const part of body.parts) {
     const outline = link.outlines.get(part);
     if (outline) {
@@ -343,21 +341,25 @@ function readBack(link: FulcrumLink, body: MatterBody, fulcrum: FulcrumBody): vo
   body.angle = angle;
 }
 
-/** Turns the offsets of the constraints that hold `body` by `angle`, as matter keeps them. */
-function turnConstraintPoints(engine: MatterEngine, body: MatterBody, angle: number): void {
-  const c = Math.cos(angle);
-  const s = Math.sin(angle);
-  for (const constraint of engine._fulcrum.joints.keys()) {
-    for (const [end, point] of [
-      [constraint.bodyA, constraint.pointA],
-      [constraint.bodyB, constraint.pointB],
-    ] as const) {
-      if (end !== body) continue;
-      const x = point.x;
-      point.x = c * x - s * point.y;
-      point.y = s * x + c * point.y;
-    }
+/**
+ * Turns each constraint's offsets with its bodies, as matter keeps them: by how far each moving body
+ * turned in the update just read back (its angle less anglePrev). One pass over the constraints.
+ */
+function turnConstraintPoints(link: FulcrumLink): void {
+  for (const constraint of link.joints.keys()) {
+    turnWith(constraint.bodyA, constraint.pointA);
+    turnWith(constraint.bodyB, constraint.pointB);
   }
+}
+
+function turnWith(body: MatterBody | null, point: MatterVector): void {
+  if (body === null || body.isStatic) return;
+  const turned = body.angle - body.anglePrev;
+  if (turned === 0) return;
+  const { c, s } = makeRot(turned);
+  const x = point.x;
+  point.x = c * x - s * point.y;
+  point.y = s * x + c * point.y;
 }
 
 function makePair(event: ContactBeginEvent, timestamp: number): MatterPair {
@@ -462,12 +464,8 @@ export const Engine = {
     link.begun.length = 0;
     link.ended.length = 0;
     if (dt > 0) world.step(dt / 1000);
-    for (const [body, fulcrum] of link.bodies) {
-      if (body.isStatic) continue;
-      const turned = fulcrum.angle - body.angle;
-      readBack(link, body, fulcrum);
-      if (turned !== 0) turnConstraintPoints(engine, body, turned);
-    }
+    for (const [body, fulcrum] of link.bodies) if (!body.isStatic) readBack(link, body, fulcrum);
+    turnConstraintPoints(link);
 
     const pairs = engine.pairs;
     // the pairs active before this update and still active after it: built only when listened to

@@ -1,3 +1,4 @@
+import { makeRot } from '../math/rot';
 /**
  * matter.js's `Vector`: plain `{ x, y }` arithmetic. A module object, not a class, and mutable: plugins
  * replace its functions by path (`Matter.after('Vector.add', ...)`).
@@ -26,8 +27,7 @@ export const Vector = {
 
   /** `vector` turned by `angle` (radians, clockwise on a y-down screen), into `output` if given. */
   rotate(vector: MatterVector, angle: number, output?: MatterVector): MatterVector {
-    const c = Math.cos(angle);
-    const s = Math.sin(angle);
+    const { c, s } = makeRot(angle);
     const out = output ?? { x: 0, y: 0 };
     const x = vector.x * c - vector.y * s;
     out.y = vector.x * s + vector.y * c;
@@ -37,8 +37,7 @@ export const Vector = {
 
   /** `vector` turned by `angle` about `point`, into `output` if given. */
   rotateAbout(vector: MatterVector, angle: number, point: MatterVector, output?: MatterVector): MatterVector {
-    const c = Math.cos(angle);
-    const s = Math.sin(angle);
+    const { c, s } = makeRot(angle);
     const dx = vector.x - point.x;
     const dy = vector.y - point.y;
     const out = output ?? { x: 0, y: 0 };
@@ -98,7 +97,7 @@ export const Vector = {
     return { x: -vector.x, y: -vector.y };
   },
 
-  /** The angle of the line from a to b. */
+  /** The angle of the line from a to b (output only: matter's Math.atan2, the engine never reads it). */
   angle(a: MatterVector, b: MatterVector): number {
     return Math.atan2(b.y - a.y, b.x - a.x);
   },

@@ -1,3 +1,5 @@
+import { arcTangent2 } from '../math/arc-tangent';
+import { makeRot } from '../math/rot';
 import { type MatterVector, Vector } from './vector';
 
 /** A vertex of a matter.js body: its world point, its index in the list, and its body. */
@@ -153,10 +155,13 @@ export const Vertices = {
       // of the centre on the edge in to its foot on the edge out
       const a = Vector.normalise({ x: prev.x - v.x, y: prev.y - v.y });
       const b = Vector.normalise({ x: next.x - v.x, y: next.y - v.y });
-      const turn = Math.acos(Math.max(-1, Math.min(1, a.x * b.x + a.y * b.y))); // the corner's angle
-      const reach = r / Math.tan(turn / 2); // from the corner to each foot
+      // the corner's angle from its cosine and sine; the half-angle forms keep to + - * / and sqrt
+      const cos = Math.max(-1, Math.min(1, a.x * b.x + a.y * b.y));
+      const sin = Math.abs(a.x * b.y - a.y * b.x);
+      const turn = arcTangent2(sin, cos);
+      const reach = (r * (1 + cos)) / sin; // from the corner to each foot: r / tan(turn / 2)
       const bisector = Vector.normalise({ x: a.x + b.x, y: a.y + b.y });
-      const toCentre = r / Math.sin(turn / 2);
+      const toCentre = r / Math.sqrt((1 - cos) / 2); // r / sin(turn / 2)
       const cx = v.x + bisector.x * toCentre;
       const cy = v.y + bisector.y * toCentre;
       const fromX = v.x + a.x * reach - cx;
@@ -166,12 +171,13 @@ export const Vertices = {
       let steps = quality !== undefined && quality !== -1 ? quality : 1.75 * r ** 0.32;
       steps = Math.min(Math.max(steps, qualityMin || 2), qualityMax || 14);
       steps = Math.ceil(steps / 2) * 2; // even, as matter keeps it
-      for (let j = 0; j <= steps; j++) {
-        const t = (direction * sweep * j) / steps;
-        const c = Math.cos(t);
-        const s = Math.sin(t);
+      // the arc's ends are the feet themselves, on the edges exactly; its inner points turned about the centre
+      out.push({ x: v.x + a.x * reach, y: v.y + a.y * reach });
+      for (let j = 1; j < steps; j++) {
+        const { c, s } = makeRot((direction * sweep * j) / steps);
         out.push({ x: cx + fromX * c - fromY * s, y: cy + fromX * s + fromY * c });
       }
+      out.push({ x: v.x + b.x * reach, y: v.y + b.y * reach });
     }
     return out;
   },
