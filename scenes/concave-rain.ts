@@ -4,9 +4,9 @@
  * engine builds the same pieces. Outlines and jitter come from the seeded PRNG.
  */
 import { Shape } from '../src/index';
-import { GRAVITY } from './common';
+import { rainScene } from './rain';
 import { createRandom } from './random';
-import type { Scene, SceneBody, SceneShape, V } from './types';
+import type { Scene, SceneShape, V } from './types';
 
 const CELL = 1.2; // grid pitch: every outline fits in a 1 m square
 
@@ -90,52 +90,8 @@ export function concaveRain({
   width?: number;
   seed?: number;
 } = {}): Scene {
-  const random = createRandom(seed);
-  const halfWidth = width / 2;
-  const wallHeight = 20;
-  const container: SceneBody = {
-    type: 'static',
-    position: { x: 0, y: 0 },
-    shapes: [
-      { kind: 'box', halfWidth: halfWidth + 1, halfHeight: 0.5, center: { x: 0, y: -0.5 } },
-      {
-        kind: 'box',
-        halfWidth: 0.5,
-        halfHeight: wallHeight / 2,
-        center: { x: -halfWidth - 0.5, y: wallHeight / 2 },
-      },
-      {
-        kind: 'box',
-        halfWidth: 0.5,
-        halfHeight: wallHeight / 2,
-        center: { x: halfWidth + 0.5, y: wallHeight / 2 },
-      },
-    ],
-    tag: 'container',
-  };
-  const bodies: SceneBody[] = [container];
-  const columns = Math.floor(width / CELL) - 1;
-  for (let i = 0; i < count; i++) {
-    const column = i % columns;
-    const row = Math.floor(i / columns);
-    bodies.push({
-      type: 'dynamic',
-      position: {
-        x: (column - (columns - 1) / 2) * CELL + random.range(-0.1, 0.1),
-        y: 2 + row * CELL + random.range(-0.1, 0.1),
-      },
-      angle: random.range(-Math.PI, Math.PI),
-      shapes: PIECES[random.int(PIECES.length)],
-      tag: 'drop',
-    });
-  }
-  const top = 2 + Math.ceil(count / columns) * CELL;
-  return {
-    name: `concave-rain-${count}`,
-    gravity: GRAVITY,
-    bodies,
-    joints: [],
-    view: { center: { x: 0, y: top / 2 }, halfHeight: top / 2 + 2 },
-    containment: { lower: { x: -halfWidth - 1, y: -1 }, upper: { x: halfWidth + 1, y: top + 100 } },
-  };
+  return rainScene(`concave-rain-${count}`, count, width, CELL, createRandom(seed), (random) => {
+    const angle = random.range(-Math.PI, Math.PI);
+    return { shapes: PIECES[random.int(PIECES.length)], angle };
+  });
 }

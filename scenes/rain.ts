@@ -3,7 +3,7 @@
  * into an open container of static walls. Shapes and jitter come from the seeded PRNG.
  */
 import { GRAVITY, regularPolygon } from './common';
-import { createRandom } from './random';
+import { createRandom, type Random } from './random';
 import type { Scene, SceneBody, SceneShape } from './types';
 
 const CELL = 1; // grid pitch; every shape fits in a 0.8 m square so jittered neighbours never overlap
@@ -21,16 +21,21 @@ function rainShape(kind: number, sides: number): SceneShape {
   }
 }
 
-export function rain({
-  count = 1000,
-  width = 40,
-  seed = 7,
-}: {
-  count?: number;
-  width?: number;
-  seed?: number;
-} = {}): Scene {
-  const random = createRandom(seed);
+/** What a rain scene drops at each grid cell: the body's shapes and its angle, drawn from `random`. */
+export type RainDrop = (random: Random) => { shapes: SceneShape[]; angle: number };
+
+/**
+ * A rain scene: an open container of static walls `width` wide and `count` dynamic bodies (tag
+ * 'drop') on a grid of `cell` metres above it, each jittered by up to 0.1 m and made by `drop`.
+ */
+export function rainScene(
+  name: string,
+  count: number,
+  width: number,
+  cell: number,
+  random: Random,
+  drop: RainDrop,
+): Scene {
   const halfWidth = width / 2;
   const wallHeight = 20;
   const container: SceneBody = {
@@ -54,28 +59,37 @@ export function rain({
     tag: 'container',
   };
   const bodies: SceneBody[] = [container];
-  const columns = Math.floor(width / CELL) - 1;
+  const columns = Math.floor(width / cell) - 1;
   for (let i = 0; i < count; i++) {
     const column = i % columns;
     const row = Math.floor(i / columns);
-    const x = (column - (columns - 1) / 2) * CELL + random.range(-0.1, 0.1);
-    const y = 2 + row * CELL + random.range(-0.1, 0.1);
-    const shape = rainShape(random.int(4), 3 + random.int(4));
-    bodies.push({
-      type: 'dynamic',
-      position: { x, y },
-      angle: random.range(-Math.PI, Math.PI),
-      shapes: [shape],
-      tag: 'drop',
-    });
+    const x = (column - (columns - 1) / 2) * cell + random.range(-0.1, 0.1);
+    const y = 2 + row * cell + random.range(-0.1, 0.1);
+    const { shapes, angle } = drop(random);
+    bodies.push({ type: 'dynamic', position: { x, y }, angle, shapes, tag: 'drop' });
   }
-  const top = 2 + Math.ceil(count / columns) * CELL;
+  const top = 2 + Math.ceil(count / columns) * cell;
   return {
-    name: `rain-${count}`,
+    name,
     gravity: GRAVITY,
     bodies,
     joints: [],
     view: { center: { x: 0, y: top / 2 }, halfHeight: top / 2 + 2 },
     containment: { lower: { x: -halfWidth - 1, y: -1 }, upper: { x: halfWidth + 1, y: top + 100 } },
   };
+}
+
+export function rain({
+  count = 1000,
+  width = 40,
+  seed = 7,
+}: {
+  count?: number;
+  width?: number;
+  seed?: number;
+} = {}): Scene {
+  return rainScene(`rain-${count}`, count, width, CELL, createRandom(seed), (random) => {
+    const shape = rainShape(random.int(4), 3 + random.int(4));
+    return { shapes: [shape], angle: random.range(-Math.PI, Math.PI) };
+  });
 }
