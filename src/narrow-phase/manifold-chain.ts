@@ -2,6 +2,7 @@ import { frontOffset, Pack } from '../geometry/packed';
 import type { Manifold } from '../geometry/types';
 import type { Transform } from '../math/vec2';
 import type { CollideContext } from './collide-context';
+import { setRelative } from './manifold-polygon';
 
 /*
  * A chain's one-sided segment against another shape (see Pack.ONE_SIDED). Two rules on top of the
@@ -25,18 +26,9 @@ enum ChainId {
   CLIPPED2 = 1 << 12,
 }
 
-/**
- * Transform of B relative to A written to `out`: cos, sin, x, y (B's local points to A's frame).
- */
+/** B's transform relative to A (setRelative's layout) from the two transforms. */
 function relativeTransform(xfA: Transform, xfB: Transform, out: Float64Array): void {
-  const ac = xfA.q.c;
-  const as = xfA.q.s;
-  const dx = xfB.p.x - xfA.p.x;
-  const dy = xfB.p.y - xfA.p.y;
-  out[0] = ac * xfB.q.c + as * xfB.q.s;
-  out[1] = ac * xfB.q.s - as * xfB.q.c;
-  out[2] = ac * dx + as * dy;
-  out[3] = ac * dy - as * dx;
+  setRelative(out, xfA.q.c, xfA.q.s, xfA.p.x, xfA.p.y, xfB.q.c, xfB.q.s, xfB.p.x, xfB.p.y);
 }
 
 /**

@@ -72,7 +72,7 @@ function edgeSeparation(p: WorkPolygon, i: number, q: WorkPolygon, out: Float64A
 }
 
 /** B's transform relative to A (q = qA^T qB, p = qA^T (pB - pA)): cos, sin, x, y, to `relative`. */
-function setRelative(
+export function setRelative(
   relative: Float64Array,
   ac: number,
   as: number,
