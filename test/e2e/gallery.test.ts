@@ -217,14 +217,29 @@ describe('the slingshot game', () => {
       await waitForSteps(page, 20);
       // twice the speed: the flights take half as long (the steps are the same)
       await page.selectOption('#speed', '2');
+      // Each shot is taken paused and stepped by hand: the bird cannot move between the moment its
+      // position is read and the moment the pointer comes down on it, and the pull lasts 60 steps
+      // whatever the machine's speed. (Run in real time, the pointer now and then came down where a
+      // settling bird had just been, and the shot was never taken.) The flights run in real time.
+      const setPaused = (paused: boolean) =>
+        page.evaluate((wanted) => {
+          const g = (window as unknown as { gallery: { runner: { paused: boolean } } }).gallery;
+          if (g.runner.paused !== wanted) document.getElementById('btn-pause')?.click();
+        }, paused);
       const shoot = async () => {
+        await setPaused(true);
         const before = await read(page);
         expect(before.state).toBe('ready');
         if (!before.bird) throw new Error('no bird in the sling');
         const from = await worldToPage(page, before.bird);
         const to = await worldToPage(page, { x: before.anchor.x + PULL.x, y: before.anchor.y + PULL.y });
-        await mouseDrag(page, from, to, 60);
+        await page.mouse.move(from.x, from.y);
+        await page.mouse.down();
+        await page.mouse.move(to.x, to.y, { steps: 12 });
+        await stepByHand(page, 60);
+        await page.mouse.up();
         expect((await read(page)).shots).toBe(before.shots + 1);
+        await setPaused(false);
       };
 
       await shoot();
