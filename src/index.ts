@@ -3,7 +3,7 @@
  * @module fulcrum
  */
 
-export { Body, type BodyDef, type BodyType } from './api/body';
+export { Body, type BodyDef, type BodyType, type MassData } from './api/body';
 export type {
   BodyEvent,
   ContactBeginEvent,
@@ -17,7 +17,7 @@ export type {
 } from './api/events';
 export { type Filter, type RayCastResult, type ShapeDef, ShapeHandle } from './api/shape';
 export { stateHash } from './api/state-hash';
-export { World, type WorldDef } from './api/world';
+export { type FrictionMixing, World, type WorldDef } from './api/world';
 export { FulcrumError } from './core/errors';
 export { Shape } from './geometry/shapes';
 export { parseSvgPath, type SvgPathOptions, type SvgSubpath } from './geometry/svg-path';

@@ -1,9 +1,10 @@
-import { checkBoolean, FulcrumError, fail } from '../core/errors';
+import { checkBoolean, checkKnownKeys, FulcrumError, fail } from '../core/errors';
 import {
   checkAngle,
   checkCoordinates,
   checkForce,
   checkNonNegativeRate,
+  checkRange,
   checkRate,
   checkVector,
   Limits,
@@ -21,6 +22,15 @@ import { attachShapes, detachShape, type ShapeDef, type ShapeHandle } from './sh
 import type { World } from './world';
 
 export type BodyType = 'static' | 'kinematic' | 'dynamic';
+
+/** A body's mass (kg), rotational inertia about its centre of mass, and that centre in the body's frame. */
+export interface MassData {
+  mass: number;
+  inertia: number;
+  center?: Vec2;
+}
+
+const MASS_DATA_KEYS = ['mass', 'inertia', 'center'] as const;
 
 export interface BodyDef {
   type?: BodyType;
@@ -338,6 +348,39 @@ export class Body {
     if (fixed) core.bodies.state[b * BodyState.STRIDE + BodyState.W] = 0;
     core.updateMass(b);
     core.wake(b);
+  }
+
+  /**
+   * Gives the body a mass (kg) and a rotational inertia about its centre of mass in place of what its
+   * shapes give, and optionally that centre too (a point in the body's frame; by default the shapes'
+   * centroid). Kept when shapes are added, removed or changed, until `resetMassData()`; only a dynamic
+   * body uses it (a static or kinematic one keeps it for when it becomes dynamic).
+   */
+  setMassData(data: MassData): void {
+    const b = this.unlocked();
+    if (typeof data !== 'object' || data === null) fail('massData', data, 'an object');
+    checkKnownKeys('massData', data, MASS_DATA_KEYS);
+    const mass = checkRange('massData.mass', data.mass, Limits.MIN_MASS, Limits.MAX_MASS);
+    const inertia = checkRange('massData.inertia', data.inertia, Limits.MIN_INERTIA, Limits.MAX_INERTIA);
+    const center = data.center === undefined ? null : checkCoordinates('massData.center', data.center);
+    const bodies = this.core.bodies;
+    bodies.givenMass[b] = mass;
+    bodies.givenInertia[b] = inertia;
+    bodies.givenLcx[b] = center === null ? 0 : center.x;
+    bodies.givenLcy[b] = center === null ? 0 : center.y;
+    bodies.flags[b] |= BodyFlag.MASS_SET;
+    if (center === null) bodies.flags[b] &= ~BodyFlag.CENTER_SET;
+    else bodies.flags[b] |= BodyFlag.CENTER_SET;
+    this.core.updateMass(b);
+    this.core.wake(b);
+  }
+
+  /** Goes back to the mass, inertia and centre of mass that the body's shapes give. */
+  resetMassData(): void {
+    const b = this.unlocked();
+    this.core.bodies.flags[b] &= ~(BodyFlag.MASS_SET | BodyFlag.CENTER_SET);
+    this.core.updateMass(b);
+    this.core.wake(b);
   }
 
   setBullet(bullet: boolean): void {

@@ -42,6 +42,18 @@ export interface WorldDef {
   enableSleep?: boolean;
   enableContinuous?: boolean;
   lengthUnitsPerMeter?: number;
+  /** how a contact's friction comes from its two shapes': 'geometric' (default) sqrt(a * b), 'min' the smaller */
+  frictionMixing?: FrictionMixing;
+}
+
+export type FrictionMixing = 'geometric' | 'min';
+
+const FRICTION_MIXINGS: readonly FrictionMixing[] = ['geometric', 'min'];
+
+function checkFrictionMixing(value: unknown): FrictionMixing {
+  if (!FRICTION_MIXINGS.includes(value as FrictionMixing))
+    fail('frictionMixing', value, "'geometric' or 'min'");
+  return value as FrictionMixing;
 }
 
 const WORLD_DEF_KEYS = [
@@ -50,6 +62,7 @@ const WORLD_DEF_KEYS = [
   'enableSleep',
   'enableContinuous',
   'lengthUnitsPerMeter',
+  'frictionMixing',
 ] as const;
 
 /** A physics world: bodies, their shapes, contacts and the step that moves them. */
@@ -74,6 +87,8 @@ export class World {
       def.lengthUnitsPerMeter === undefined
         ? 1
         : checkRange('lengthUnitsPerMeter', def.lengthUnitsPerMeter, Limits.MIN_UNITS, Limits.MAX_UNITS);
+    const frictionMixing =
+      def.frictionMixing === undefined ? 'geometric' : checkFrictionMixing(def.frictionMixing);
     this.core = new WorldCore(units);
     this.handles = new WorldHandles(this.core);
     this.core.gravityX = gravity.x;
@@ -81,6 +96,7 @@ export class World {
     this.core.subSteps = subSteps;
     this.core.enableSleep = enableSleep;
     this.core.enableContinuous = enableContinuous;
+    this.core.frictionMin = frictionMixing === 'min';
   }
 
   get gravity(): Vec2 {
@@ -110,6 +126,14 @@ export class World {
     checkBoolean('enableSleep', value);
     this.core.enableSleep = value;
     if (!value) for (const b of this.bodies) this.core.wake(b.slot);
+  }
+
+  get frictionMixing(): FrictionMixing {
+    return this.core.frictionMin ? 'min' : 'geometric';
+  }
+
+  set frictionMixing(value: FrictionMixing) {
+    this.core.frictionMin = checkFrictionMixing(value) === 'min';
   }
 
   get enableContinuous(): boolean {

@@ -35,6 +35,14 @@ export const Limits = {
   /** densities other than 0 (kg per square world unit) */
   MIN_DENSITY: 1e-12,
   MAX_DENSITY: 1e12,
+  /**
+   * masses and rotational inertias given by Body.setMassData: the range shapes can reach (the smallest
+   * density on the smallest shape to the largest density on the largest)
+   */
+  MIN_MASS: 1e-24,
+  MAX_MASS: 1e30,
+  MIN_INERTIA: 1e-36,
+  MAX_INERTIA: 1e48,
   /** forces, torques, impulses, and the joints' force and torque caps */
   FORCE: 1e40,
   /** the time step, other than 0 */

@@ -1,6 +1,5 @@
 import type { MatterBody } from './body';
 import { Bounds, type MatterBounds } from './bounds';
-import { Common } from './common';
 import { Composite } from './composite';
 import { Constraint } from './constraint';
 import type { MatterEngine } from './engine';

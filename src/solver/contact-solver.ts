@@ -212,6 +212,7 @@ export function prepareContacts(
   contacts: ContactStore,
   bodies: BodyStore,
   shapes: ShapeStore,
+  frictionMin: boolean,
 ): void {
   cc.reserve(count);
   // set before the loop, which must end the function (see listAwakeBodies in solver.ts)
@@ -263,7 +264,11 @@ export function prepareContacts(
     cc.ids[i * 3 + 2] = c;
     d[base + ContactField.NX] = nx;
     d[base + ContactField.NY] = ny;
-    d[base + ContactField.FRICTION] = Math.sqrt(friction[sA] * friction[sB]);
+    const frictionA = friction[sA];
+    const frictionB = friction[sB];
+    d[base + ContactField.FRICTION] = frictionMin
+      ? Math.min(frictionA, frictionB)
+      : Math.sqrt(frictionA * frictionB);
     d[base + ContactField.MA] = mA;
     d[base + ContactField.IA] = iA;
     d[base + ContactField.MB] = mB;

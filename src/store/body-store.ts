@@ -18,6 +18,10 @@ export enum BodyFlag {
   FIXED_ROTATION = 2,
   BULLET = 4,
   ALLOW_SLEEP = 8,
+  /** mass and rotational inertia given by Body.setMassData, not worked out from the shapes */
+  MASS_SET = 16,
+  /** the centre of mass given by Body.setMassData too */
+  CENTER_SET = 32,
 }
 
 /**
@@ -58,6 +62,11 @@ export class BodyStore extends SlotStore {
   lcx = new Float64Array(0);
   lcy = new Float64Array(0);
   mass = new Float64Array(0);
+  /** what Body.setMassData gave (read where the flags MASS_SET and CENTER_SET say so) */
+  givenMass = new Float64Array(0);
+  givenInertia = new Float64Array(0);
+  givenLcx = new Float64Array(0);
+  givenLcy = new Float64Array(0);
   invMass = new Float64Array(0);
   inertia = new Float64Array(0);
   invInertia = new Float64Array(0);
@@ -94,6 +103,10 @@ export class BodyStore extends SlotStore {
     this.lcx[slot] = 0;
     this.lcy[slot] = 0;
     this.mass[slot] = 0;
+    this.givenMass[slot] = 0;
+    this.givenInertia[slot] = 0;
+    this.givenLcx[slot] = 0;
+    this.givenLcy[slot] = 0;
     this.invMass[slot] = 0;
     this.inertia[slot] = 0;
     this.invInertia[slot] = 0;
@@ -126,6 +139,10 @@ export class BodyStore extends SlotStore {
     this.lcx = growF64(this.lcx, capacity);
     this.lcy = growF64(this.lcy, capacity);
     this.mass = growF64(this.mass, capacity);
+    this.givenMass = growF64(this.givenMass, capacity);
+    this.givenInertia = growF64(this.givenInertia, capacity);
+    this.givenLcx = growF64(this.givenLcx, capacity);
+    this.givenLcy = growF64(this.givenLcy, capacity);
     this.invMass = growF64(this.invMass, capacity);
     this.inertia = growF64(this.inertia, capacity);
     this.invInertia = growF64(this.invInertia, capacity);

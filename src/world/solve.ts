@@ -166,7 +166,7 @@ function prepareContacts(core: WorldCore, h: number): void {
   coloring.begin(bodies.capacity, contacts.liveCount);
   addTouchingContacts(contacts, bodies, coloring);
   const total = coloring.finish();
-  prepareContactConstraints(cc, coloring.order, total, contacts, bodies, core.shapes);
+  prepareContactConstraints(cc, coloring.order, total, contacts, bodies, core.shapes, core.frictionMin);
   cc.supportCount = 0;
   cc.levelExcess = 0;
   if (cc.heavyPair) stiffenLoadedContacts(cc, bodies, core.gravityX, core.gravityY);

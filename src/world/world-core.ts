@@ -125,6 +125,8 @@ export class WorldCore implements PairFilter {
   subSteps = 4;
   enableSleep = true;
   enableContinuous = true;
+  /** a contact's friction from its shapes': true for the smaller, false for their geometric mean */
+  frictionMin = false;
   hitEventThreshold = 1;
   locked = false;
   /** joints in creation order, and each body's joints */
@@ -285,13 +287,22 @@ export class WorldCore implements PairFilter {
       lcy = my / mass;
       inertia = inertiaAtOrigin - mass * (lcx * lcx + lcy * lcy);
     }
+    const flags = bodies.flags[b];
+    if (kind === BodyKind.DYNAMIC && (flags & BodyFlag.MASS_SET) !== 0) {
+      mass = bodies.givenMass[b];
+      inertia = bodies.givenInertia[b];
+      if ((flags & BodyFlag.CENTER_SET) !== 0) {
+        lcx = bodies.givenLcx[b];
+        lcy = bodies.givenLcy[b];
+      }
+    }
     if (kind === BodyKind.DYNAMIC && mass === 0) {
       // a dynamic body always has mass, so that forces and contacts act on it
       mass = 1;
     }
     bodies.mass[b] = kind === BodyKind.DYNAMIC ? mass : 0;
     bodies.invMass[b] = kind === BodyKind.DYNAMIC ? 1 / mass : 0;
-    const fixed = (bodies.flags[b] & BodyFlag.FIXED_ROTATION) !== 0;
+    const fixed = (flags & BodyFlag.FIXED_ROTATION) !== 0;
     bodies.inertia[b] = kind === BodyKind.DYNAMIC && !fixed ? inertia : 0;
     bodies.invInertia[b] = kind === BodyKind.DYNAMIC && !fixed && inertia > 0 ? 1 / inertia : 0;
     bodies.lcx[b] = lcx;
