@@ -128,6 +128,11 @@ export class World {
     if (!value) for (const b of this.bodies) this.core.wake(b.slot);
   }
 
+  /** world units to the metre, as given when the world was made */
+  get lengthUnitsPerMeter(): number {
+    return this.core.settings.lengthUnitsPerMeter;
+  }
+
   get frictionMixing(): FrictionMixing {
     return this.core.frictionMin ? 'min' : 'geometric';
   }

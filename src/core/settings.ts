@@ -30,6 +30,8 @@ export interface Settings {
   restitutionThreshold: number;
   /** largest linear speed a body may reach */
   maxLinearSpeed: number;
+  /** the world's length unit: how many make a metre (the scale of every length above) */
+  lengthUnitsPerMeter: number;
 }
 
 export const CONTACT_HERTZ = 30;
@@ -51,6 +53,7 @@ export function makeSettings(lengthUnitsPerMeter: number): Settings {
   const u = lengthUnitsPerMeter;
   const linearSlop = 0.005 * u;
   return {
+    lengthUnitsPerMeter: u,
     linearSlop,
     speculativeDistance: 4 * linearSlop,
     manifoldTolerance: linearSlop / 500,

@@ -53,6 +53,8 @@ export interface MatterBody {
   deltaTime: number;
   /** the Fulcrum body that simulates it while it is in an engine's world (not enumerable) */
   _fulcrum?: FulcrumBody | null;
+  /** what changed since the engine last built the body's Fulcrum body (not enumerable) */
+  _stale?: Stale;
   /** a chamfered rectangle's exact shape (Bodies.rectangle; not enumerable), until its vertices change */
   _rounded?: { halfWidth: number; halfHeight: number; radius: number } | null;
 }
@@ -62,6 +64,21 @@ export type BodyOptions = Omit<Partial<MatterBody>, 'vertices' | 'parts'> & {
   vertices?: MatterVector[];
   parts?: MatterBody[];
 };
+
+/** What a body's Fulcrum body has to be given again at the next update. */
+export enum Stale {
+  NO = 0,
+  /** mass or inertia */
+  MASS = 1,
+  /** outline or parts (and so mass) */
+  SHAPES = 2,
+}
+
+/** Marks what the engine has to rebuild of a body in its world (the most of what was asked). */
+function markStale(body: MatterBody, stale: Stale): void {
+  if (body._fulcrum && (body._stale ?? Stale.NO) < stale) body._stale = stale;
+  if (body.parent !== body && body.parent) markStale(body.parent, stale);
+}
 
 /** Seconds per matter velocity unit: matter's velocities are per 1000/60 ms. */
 export const VELOCITY_TO_SI = 60;
@@ -124,6 +141,7 @@ export const Body = {
     const body = Common.extend(true, defaults(), options) as unknown as MatterBody;
     body.id = options.id ?? Common.nextId();
     Object.defineProperty(body, '_fulcrum', { value: null, writable: true, enumerable: false });
+    Object.defineProperty(body, '_stale', { value: Stale.NO, writable: true, enumerable: false });
     const points = options.vertices ?? Vertices.fromPath('L 0 0 L 40 0 L 40 40 L 0 40');
     body.parent = body;
     body.parts = [body];
@@ -224,6 +242,7 @@ export const Body = {
     body.mass = mass;
     body.inverseMass = 1 / mass;
     body.density = mass / body.area;
+    markStale(body, Stale.MASS);
   },
 
   setDensity(body: MatterBody, density: number): void {
@@ -235,7 +254,7 @@ export const Body = {
   setInertia(body: MatterBody, inertia: number): void {
     body.inertia = inertia;
     body.inverseInertia = 1 / inertia;
-    body._fulcrum?.setFixedRotation(inertia === Number.POSITIVE_INFINITY);
+    markStale(body, Stale.MASS);
   },
 
   /** Replaces the body's outline (world points): its area, mass and inertia follow at its density. */
@@ -254,6 +273,7 @@ export const Body = {
     body.inverseInertia = 1 / body.inertia;
     Vertices.translate(body.vertices, body.position);
     Bounds.update(body.bounds, body.vertices, body.velocity);
+    markStale(body, Stale.SHAPES);
   },
 
   /** Makes `parts` the body's parts (a compound body): its position becomes their centre of mass. */
@@ -294,6 +314,7 @@ export const Body = {
     body.inertia = inertia;
     body.inverseInertia = 1 / inertia;
     Bounds.update(body.bounds, body.vertices, body.velocity);
+    markStale(body, Stale.SHAPES);
   },
 
   /** Moves the body (all its parts) so that its centre of mass is at `position`. */
@@ -405,7 +426,6 @@ export const Body = {
     body.position = position;
     Body.setVertices(body, body.vertices);
     Bounds.update(body.bounds, body.vertices, body.velocity);
-    body._fulcrum?.scale({ x: scaleX, y: scaleY }, origin);
   },
 
   /** Adds `force` (matter's units: mass times px per ms²) at the world `position`; cleared after each update. */

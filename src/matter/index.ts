@@ -1,6 +1,6 @@
 /**
- * The matter.js layer (issue 21, in progress): matter's API over Fulcrum, the modules of matter 0.20
- * that programs use. Not yet an entry point of the package (see the issue's notes for what is left).
+ * The matter.js layer, entry point `fulcrum/matter`: matter's API over Fulcrum, the modules of matter
+ * 0.20 that programs use (issue 21; what still differs is in docs/guide/from-matter.md).
  */
 import { Bodies } from './bodies';
 import { Body } from './body';

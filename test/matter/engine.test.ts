@@ -201,10 +201,10 @@ describe('fulcrum/matter chamfered rectangles', () => {
     Matter.Composite.add(engine.world, [ground, pill, rounded]);
     for (let i = 0; i < 120; i++) Matter.Engine.update(engine);
     const fulcrum = engine._fulcrum.bodies;
-    expect(fulcrum.get(pill)?.shapes[0].type).toBe('capsule');
-    expect(fulcrum.get(rounded)?.shapes[0].type).toBe('polygon');
+    expect(fulcrum.get(pill)?.fulcrum.shapes[0].type).toBe('capsule');
+    expect(fulcrum.get(rounded)?.fulcrum.shapes[0].type).toBe('polygon');
     for (const body of [pill, rounded]) {
-      expect(Math.abs((fulcrum.get(body)?.mass ?? 0) - body.mass) / body.mass).toBeLessThan(1e-9);
+      expect(Math.abs((fulcrum.get(body)?.fulcrum.mass ?? 0) - body.mass) / body.mass).toBeLessThan(1e-9);
     }
     // lying on the ground's top (y = 580): the pill's centre its radius above it, the box half its height
     expect(Math.abs(pill.position.y - 570)).toBeLessThan(0.5);

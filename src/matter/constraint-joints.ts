@@ -1,0 +1,133 @@
+import type { Joint } from '../joints/joint';
+import { MouseJoint } from '../joints/mouse-joint';
+import { makeRot } from '../math/rot';
+import { type MatterBody, VELOCITY_TO_SI } from './body';
+import { Constraint, type MatterConstraint } from './constraint';
+import type { FulcrumLink } from './simulation';
+import type { MatterVector } from './vector';
+
+/** Constraints as Fulcrum joints: rigid ones as pins and rods, soft ones as springs of matter's period. */
+
+/**
+ * How many of matter's constraint corrections a soft constraint's period reflects per update: the
+ * exponent that fits the periods matter.js 0.20 gives a mass on a spring of stiffness 0.005 to 0.05
+ * (34.4, 17.2 and 11.2 updates at 0.005, 0.02 and 0.05: 6.7, 6.7 and 6.3 times the stiffness for
+ * (omega dt)^2). Its own count of passes would be four.
+ */
+const SPRING_PASSES = 6.7;
+
+/**
+ * The Fulcrum joint of a matter constraint, or null while one of its bodies is not in the world.
+ * Stiffness 0.9 and over is rigid: a revolute joint for length 0 (a pin), a distance joint (a rod)
+ * otherwise. Softer is a distance spring of rest length `length` with matter's period. matter moves
+ * the ends a share of the way to the rest length several times an update (constraint passes before
+ * and after the collisions, and the last update's correction carried over), which acts on the
+ * position's second difference like a spring with (omega dt)^2 = 1 - (1 - stiffness)^SPRING_PASSES,
+ * dt = 1000/60 ms, whatever the masses.
+ */
+function createJoint(link: FulcrumLink, constraint: MatterConstraint): Joint | null {
+  const end = (body: MatterBody | null, point: MatterVector) => {
+    if (body === null) return { fulcrum: link.anchor, local: { x: point.x, y: point.y } };
+    const fulcrum = link.bodies.get(body)?.fulcrum;
+    if (!fulcrum) return null;
+    const { c, s } = makeRot(body.angle);
+    return { fulcrum, local: { x: c * point.x + s * point.y, y: -s * point.x + c * point.y } };
+  };
+  const a = end(constraint.bodyA, constraint.pointA);
+  const b = end(constraint.bodyB, constraint.pointB);
+  if (!a || !b || a.fulcrum === b.fulcrum) return null;
+  const rigid = constraint.stiffness >= 0.9;
+  const c = 1 - (1 - Math.min(constraint.stiffness, 1)) ** SPRING_PASSES;
+  const hertz = (Math.sqrt(c) * VELOCITY_TO_SI) / (2 * Math.PI);
+  if (constraint.bodyA === null && constraint.bodyB !== null && !rigid && constraint.length < 1) {
+    // a soft pull of a body to a world point that moves (a mouse constraint's): a mouse joint,
+    // whose target follows pointA (see syncConstraints)
+    return link.world.createJoint({
+      type: 'mouse',
+      body: b.fulcrum,
+      target: Constraint.pointBWorld(constraint),
+      hertz,
+      // a hundred times the body's weight under matter's default gravity (1000 px/s²): the pull is
+      // the spring's, not a cap's
+      maxForce: 1e5 * Math.max(b.fulcrum.mass, 1e-6),
+    });
+  }
+  if (rigid && constraint.length === 0) {
+    return link.world.createJoint({
+      type: 'revolute',
+      bodyA: a.fulcrum,
+      bodyB: b.fulcrum,
+      localAnchorA: a.local,
+      localAnchorB: b.local,
+    });
+  }
+  return link.world.createJoint({
+    type: 'distance',
+    bodyA: a.fulcrum,
+    bodyB: b.fulcrum,
+    localAnchorA: a.local,
+    localAnchorB: b.local,
+    length: constraint.length,
+    enableSpring: !rigid,
+    hertz: rigid ? 0 : hertz,
+    dampingRatio: Math.min(constraint.damping, 1),
+  });
+}
+
+/**
+ * Keeps each constraint's joint in step with it before an update: made again when its bodies
+ * changed (a mouse constraint grabbing or letting go), a mouse joint's target moved to `pointA`.
+ */
+export function syncConstraints(link: FulcrumLink): void {
+  for (const [constraint, record] of link.joints) {
+    if (record.joint !== null && (record.bodyA !== constraint.bodyA || record.bodyB !== constraint.bodyB)) {
+      if (record.joint.isValid) link.world.destroyJoint(record.joint);
+      record.joint = null;
+    }
+    if (record.joint === null && (constraint.bodyA !== null || constraint.bodyB !== null)) {
+      record.joint = createJoint(link, constraint);
+      record.bodyA = constraint.bodyA;
+      record.bodyB = constraint.bodyB;
+    }
+    if (record.joint instanceof MouseJoint) record.joint.setTarget(constraint.pointA);
+  }
+}
+
+/**
+ * Turns each constraint's offsets with its bodies, as matter keeps them: by how far each moving body
+ * turned in the update just read back (its angle less anglePrev). One pass over the constraints.
+ */
+export function turnConstraintPoints(link: FulcrumLink): void {
+  for (const constraint of link.joints.keys()) {
+    turnWith(constraint.bodyA, constraint.pointA);
+    turnWith(constraint.bodyB, constraint.pointB);
+  }
+}
+
+function turnWith(body: MatterBody | null, point: MatterVector): void {
+  if (body === null || body.isStatic) return;
+  const turned = body.angle - body.anglePrev;
+  if (turned === 0) return;
+  const { c, s } = makeRot(turned);
+  const x = point.x;
+  point.x = c * x - s * point.y;
+  point.y = s * x + c * point.y;
+}
+
+/**
+ * Follows the world's constraints: forgets the joints of constraints no longer in it, and notes new
+ * ones (made at the next syncConstraints). A joint destroyed with its body is made again once its
+ * bodies are back.
+ */
+export function syncConstraintMembers(link: FulcrumLink, constraints: readonly MatterConstraint[]): void {
+  const present = new Set(constraints);
+  for (const [constraint, record] of link.joints) {
+    if (present.has(constraint)) continue;
+    if (record.joint?.isValid) link.world.destroyJoint(record.joint);
+    link.joints.delete(constraint);
+  }
+  for (const constraint of present) {
+    if (!link.joints.has(constraint)) link.joints.set(constraint, { joint: null, bodyA: null, bodyB: null });
+  }
+  for (const record of link.joints.values()) if (record.joint && !record.joint.isValid) record.joint = null;
+}

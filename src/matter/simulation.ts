@@ -1,0 +1,342 @@
+import type { Body as FulcrumBody } from '../api/body';
+import type { World as FulcrumWorld } from '../api/world';
+import { Shape } from '../geometry/shapes';
+import type { Geometry } from '../geometry/types';
+import type { Joint } from '../joints/joint';
+import { makeRot } from '../math/rot';
+import { type MatterBody, Stale, VELOCITY_TO_SI } from './body';
+import type { TouchCounts } from './collision-pairs';
+import { Composite, type MatterComposite } from './composite';
+import type { MatterConstraint } from './constraint';
+import { Events } from './events';
+import type { MatterVector } from './vector';
+
+/*
+ * The link between a matter engine's plain objects and the Fulcrum world that simulates them: each
+ * matter body in the world has a Fulcrum body whose origin is the matter body's position (its centre
+ * of mass) and whose shapes are its parts, in matter's pixels with y down. After each step the matter
+ * bodies are written from the Fulcrum bodies (readBack).
+ */
+
+/** A matter body in the world and its Fulcrum body. */
+export interface Simulated {
+  body: MatterBody;
+  fulcrum: FulcrumBody;
+  /** each part's outline in the body's frame, in the order of body.parts */
+  outlines: MatterVector[][];
+  /** each part's position in the body's frame (compound bodies) */
+  offsets: MatterVector[];
+  /** the fields a program may set directly that the Fulcrum body was last given */
+  frictionAir: number;
+  surfaces: SurfaceFields[];
+}
+
+/** A part's contact fields as its Fulcrum shapes have them. */
+interface SurfaceFields {
+  friction: number;
+  restitution: number;
+  isSensor: boolean;
+  category: number;
+  mask: number;
+  group: number;
+}
+
+export interface JointRecord {
+  joint: Joint | null;
+  bodyA: MatterBody | null;
+  bodyB: MatterBody | null;
+}
+
+export interface FulcrumLink {
+  world: FulcrumWorld;
+  /** a static body without shapes at the origin: the world end of a constraint with one body */
+  anchor: FulcrumBody;
+  /** the world's matter constraints, each with its Fulcrum joint (null while an end has no body in the world) and the bodies it was made for */
+  joints: Map<MatterConstraint, JointRecord>;
+  /** the simulated bodies, in the order they joined the world */
+  list: Simulated[];
+  bodies: Map<MatterBody, Simulated>;
+  touching: TouchCounts;
+}
+
+/**
+ * Fulcrum's damping that takes matter's `frictionAir` off the velocity every 1000/60 ms. The world
+ * damps each of its 4 substeps by 1 / (1 + h d): d = ((1 - frictionAir)^(-1/4) - 1) / h, h = 1/240 s.
+ */
+function dampingOf(frictionAir: number): number {
+  const kept = 1 - Math.min(Math.max(frictionAir, 0), 0.999);
+  return 4 * VELOCITY_TO_SI * (1 / Math.sqrt(Math.sqrt(kept)) - 1);
+}
+
+type Rounded = { halfWidth: number; halfHeight: number; radius: number };
+
+/**
+ * A chamfered rectangle as the engine's exact shape, about its centre in its own frame: a rounded box,
+ * a capsule when the radius takes a whole side, a circle when it takes both.
+ */
+function roundedShape({ halfWidth, halfHeight, radius }: Rounded): Geometry {
+  const r = Math.min(radius, halfWidth, halfHeight);
+  const a = halfWidth - r;
+  const b = halfHeight - r;
+  const flat = 1e-9 * Math.max(halfWidth, halfHeight);
+  if (a <= flat && b <= flat) return Shape.circle(r);
+  if (b <= flat) return Shape.capsule({ x: -a, y: 0 }, { x: a, y: 0 }, r);
+  if (a <= flat) return Shape.capsule({ x: 0, y: -b }, { x: 0, y: b }, r);
+  return Shape.polygon(
+    [
+      { x: -a, y: -b },
+      { x: a, y: -b },
+      { x: a, y: b },
+      { x: -a, y: b },
+    ],
+    r,
+  );
+}
+
+/** The area of a rectangle whose corners are rounded with `radius`. */
+function roundedArea({ halfWidth, halfHeight, radius }: Rounded): number {
+  const r = Math.min(radius, halfWidth, halfHeight);
+  return 4 * halfWidth * halfHeight - (4 - Math.PI) * r * r;
+}
+
+/** Turns world point `p` into the frame of a body at `origin` turned by angle (c, s). */
+function toLocal(p: MatterVector, origin: MatterVector, c: number, s: number): MatterVector {
+  const dx = p.x - origin.x;
+  const dy = p.y - origin.y;
+  return { x: c * dx + s * dy, y: -s * dx + c * dy };
+}
+
+/**
+ * Gives the Fulcrum body shapes for the matter body's parts, and matter's mass and inertia (matter
+ * weighs a circle as the polygon it draws, and gives every body four times its inertia), and records
+ * the parts' outlines in the body's frame.
+ */
+function buildShapes(sim: Simulated): void {
+  const { body, fulcrum } = sim;
+  const { c, s } = makeRot(body.angle);
+  const origin = body.position;
+  const parts = body.parts.length > 1 ? body.parts.slice(1) : [body];
+  for (const part of parts) {
+    const def = {
+      friction: part.friction,
+      restitution: part.restitution,
+      isSensor: part.isSensor,
+      filter: {
+        categoryBits: part.collisionFilter.category >>> 0,
+        maskBits: part.collisionFilter.mask >>> 0,
+        groupIndex: part.collisionFilter.group,
+      },
+      userData: part,
+    };
+    if (part.circleRadius > 0) {
+      // a true circle
+      const density = part.mass / (Math.PI * part.circleRadius * part.circleRadius);
+      fulcrum.createShape(Shape.circle(part.circleRadius, toLocal(part.position, origin, c, s)), {
+        ...def,
+        density,
+      });
+    } else if (part._rounded && body.parts.length === 1) {
+      fulcrum.createShape(roundedShape(part._rounded), {
+        ...def,
+        density: part.mass / roundedArea(part._rounded),
+      });
+    } else {
+      const outline = part.vertices.map((p) => toLocal(p, origin, c, s));
+      if (outline.length <= 8) fulcrum.createShape(Shape.polygon(outline), { ...def, density: part.density });
+      else fulcrum.createShape(Shape.concave(outline), { ...def, density: part.density });
+    }
+  }
+  sim.surfaces = body.parts.map(surfaceOf);
+  sim.outlines = body.parts.map((part) => part.vertices.map((p) => toLocal(p, origin, c, s)));
+  sim.offsets = body.parts.map((part) => toLocal(part.position, origin, c, s));
+  applyMass(sim);
+  body._stale = Stale.NO;
+}
+
+function surfaceOf(part: MatterBody): SurfaceFields {
+  const filter = part.collisionFilter;
+  return {
+    friction: part.friction,
+    restitution: part.restitution,
+    isSensor: part.isSensor,
+    category: filter.category,
+    mask: filter.mask,
+    group: filter.group,
+  };
+}
+
+/** matter's mass and inertia on the Fulcrum body, about the matter body's position. */
+function applyMass({ body, fulcrum }: Simulated): void {
+  const fixed = body.inertia === Number.POSITIVE_INFINITY;
+  fulcrum.setFixedRotation(fixed);
+  if (!(body.mass > 0 && body.mass < Number.POSITIVE_INFINITY)) return;
+  const inertia = fixed || !(body.inertia > 0) ? fulcrum.inertia || 1 : body.inertia;
+  fulcrum.setMassData({ mass: body.mass, inertia, center: { x: 0, y: 0 } });
+}
+
+/** The Fulcrum body of matter body `body`, at its position and angle, with its velocities and damping. */
+function simulate(link: FulcrumLink, body: MatterBody): Simulated {
+  const damping = dampingOf(body.frictionAir);
+  const fulcrum = link.world.createBody({
+    type: body.isStatic ? 'static' : 'dynamic',
+    position: body.position,
+    angle: body.angle,
+    linearVelocity: { x: body.velocity.x * VELOCITY_TO_SI, y: body.velocity.y * VELOCITY_TO_SI },
+    angularVelocity: body.angularVelocity * VELOCITY_TO_SI,
+    linearDamping: damping,
+    angularDamping: damping,
+    userData: body,
+  });
+  const sim: Simulated = {
+    body,
+    fulcrum,
+    outlines: [],
+    offsets: [],
+    frictionAir: body.frictionAir,
+    surfaces: [],
+  };
+  buildShapes(sim);
+  body._fulcrum = fulcrum;
+  return sim;
+}
+
+/**
+ * Brings the Fulcrum body up to what the program changed since the last update: new shapes and mass
+ * for a body whose outline or parts changed (Body.setVertices, setParts, scale; at its current position
+ * and angle, its joints kept), its mass for Body.setMass & co., and the fields a program sets directly
+ * on the object (frictionAir; a part's friction, restitution, isSensor, collisionFilter).
+ */
+export function refresh(sim: Simulated): void {
+  const { body, fulcrum } = sim;
+  if (body._stale === Stale.SHAPES) {
+    for (const shape of fulcrum.shapes) fulcrum.destroyShape(shape);
+    fulcrum.setTransform(body.position, body.angle);
+    buildShapes(sim);
+  } else if (body._stale === Stale.MASS) {
+    applyMass(sim);
+    body._stale = Stale.NO;
+  }
+  if (body.frictionAir !== sim.frictionAir) {
+    sim.frictionAir = body.frictionAir;
+    const damping = dampingOf(body.frictionAir);
+    fulcrum.setLinearDamping(damping);
+    fulcrum.setAngularDamping(damping);
+  }
+  const parts = body.parts;
+  const first = parts.length > 1 ? 1 : 0;
+  for (let k = first; k < parts.length; k++) {
+    const part = parts[k];
+    const was = sim.surfaces[k];
+    const filter = part.collisionFilter;
+    if (
+      part.friction === was.friction &&
+      part.restitution === was.restitution &&
+      part.isSensor === was.isSensor &&
+      filter.category === was.category &&
+      filter.mask === was.mask &&
+      filter.group === was.group
+    ) {
+      continue;
+    }
+    sim.surfaces[k] = surfaceOf(part);
+    for (const shape of fulcrum.shapes) {
+      if (shape.userData !== part) continue;
+      shape.friction = part.friction;
+      shape.restitution = part.restitution;
+      shape.isSensor = part.isSensor;
+      shape.filter = {
+        categoryBits: filter.category >>> 0,
+        maskBits: filter.mask >>> 0,
+        groupIndex: filter.group,
+      };
+    }
+  }
+}
+
+/** Creates the Fulcrum bodies of the world's new matter bodies and destroys those of removed ones. */
+export function syncMembers(link: FulcrumLink, world: MatterComposite): void {
+  const present = new Set(Composite.allBodies(world));
+  const kept: Simulated[] = [];
+  for (const sim of link.list) {
+    if (present.has(sim.body)) {
+      kept.push(sim);
+      continue;
+    }
+    link.world.destroyBody(sim.fulcrum);
+    link.bodies.delete(sim.body);
+    sim.body._fulcrum = null;
+  }
+  link.list = kept;
+  for (const body of present) {
+    if (link.bodies.has(body)) continue;
+    const sim = simulate(link, body);
+    link.list.push(sim);
+    link.bodies.set(body, sim);
+  }
+}
+
+/**
+ * Writes the Fulcrum body's state into the matter body: pose, vertices, bounds (widened by the
+ * velocity, as matter's), velocities, sleep. A body asleep since the last update has not moved.
+ */
+export function readBack(sim: Simulated): void {
+  const { body, fulcrum } = sim;
+  const awake = fulcrum.isAwake;
+  if (!awake && body.isSleeping) return;
+  const centre = fulcrum.worldCenter;
+  const { c, s } = fulcrum.rotation;
+  const v = fulcrum.linearVelocity;
+  const angle = fulcrum.angle;
+  const position = body.position;
+  body.positionPrev.x = position.x;
+  body.positionPrev.y = position.y;
+  body.anglePrev = body.angle;
+  const vx = v.x / VELOCITY_TO_SI;
+  const vy = v.y / VELOCITY_TO_SI;
+  body.velocity.x = vx;
+  body.velocity.y = vy;
+  body.angularVelocity = fulcrum.angularVelocity / VELOCITY_TO_SI;
+  body.speed = Math.sqrt(vx * vx + vy * vy);
+  body.angularSpeed = Math.abs(body.angularVelocity);
+  if (!awake !== body.isSleeping) {
+    body.isSleeping = !awake;
+    Events.trigger(body, body.isSleeping ? 'sleepStart' : 'sleepEnd');
+  }
+  const turned = angle - body.angle;
+  const parts = body.parts;
+  for (let k = 0; k < parts.length; k++) {
+    const part = parts[k];
+    const outline = sim.outlines[k];
+    const vertices = part.vertices;
+    let minX = Number.POSITIVE_INFINITY;
+    let minY = Number.POSITIVE_INFINITY;
+    let maxX = Number.NEGATIVE_INFINITY;
+    let maxY = Number.NEGATIVE_INFINITY;
+    for (let i = 0; i < outline.length; i++) {
+      const p = outline[i];
+      const x = centre.x + c * p.x - s * p.y;
+      const y = centre.y + s * p.x + c * p.y;
+      const vertex = vertices[i];
+      vertex.x = x;
+      vertex.y = y;
+      if (x < minX) minX = x;
+      if (x > maxX) maxX = x;
+      if (y < minY) minY = y;
+      if (y > maxY) maxY = y;
+    }
+    const bounds = part.bounds;
+    bounds.min.x = vx < 0 ? minX + vx : minX;
+    bounds.max.x = vx > 0 ? maxX + vx : maxX;
+    bounds.min.y = vy < 0 ? minY + vy : minY;
+    bounds.max.y = vy > 0 ? maxY + vy : maxY;
+    if (part !== body) {
+      const o = sim.offsets[k];
+      part.position.x = centre.x + c * o.x - s * o.y;
+      part.position.y = centre.y + s * o.x + c * o.y;
+      part.angle += turned;
+    }
+  }
+  position.x = centre.x;
+  position.y = centre.y;
+  body.angle = angle;
+}
