@@ -44,6 +44,8 @@ export const sceneBuilders: Record<string, (quick?: boolean) => Scene> = {
   pyramid: (quick) => pyramid({ base: quick ? 20 : 40 }),
   'large-pyramid': (quick) => pyramid({ base: quick ? 30 : 100 }),
   'many-pyramids': (quick) => manyPyramids({ count: quick ? 5 : 20, base: 10 }),
+  /** the size of a matter.js demo's pyramid (120 boxes): the matter-API comparison's scene */
+  'pyramid-15': () => pyramid({ base: 15 }),
   rain: (quick) => rain({ count: quick ? 300 : 1000 }),
   tumbler: (quick) => tumbler({ count: quick ? 200 : 500 }),
   'concave-rain': (quick) => concaveRain({ count: quick ? 200 : 500 }),

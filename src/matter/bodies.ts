@@ -10,6 +10,43 @@ export type BodiesOptions = Omit<BodyOptions, 'chamfer'> & {
   chamfer?: { radius?: number | number[]; quality?: number; qualityMin?: number; qualityMax?: number };
 };
 
+/**
+ * The corners of the polygon that, rounded by `radius`, is `points` chamfered by `radius` (each arc's
+ * centre: on the corner's bisector, `radius` from both edges), about the chamfered outline's centroid;
+ * null where an arc would run past the middle of an edge (matter's outline then folds on itself).
+ */
+function insetCorners(
+  points: readonly MatterVector[],
+  radius: number,
+  centre: MatterVector,
+): MatterVector[] | null {
+  const n = points.length;
+  const corners: MatterVector[] = [];
+  for (let i = 0; i < n; i++) {
+    const prev = points[(i + n - 1) % n];
+    const v = points[i];
+    const next = points[(i + 1) % n];
+    const inLength = Math.sqrt((prev.x - v.x) ** 2 + (prev.y - v.y) ** 2);
+    const outLength = Math.sqrt((next.x - v.x) ** 2 + (next.y - v.y) ** 2);
+    const ax = (prev.x - v.x) / inLength;
+    const ay = (prev.y - v.y) / inLength;
+    const bx = (next.x - v.x) / outLength;
+    const by = (next.y - v.y) / outLength;
+    const cos = Math.max(-1, Math.min(1, ax * bx + ay * by));
+    const sin = Math.abs(ax * by - ay * bx);
+    if (sin === 0) return null;
+    const reach = (radius * (1 + cos)) / sin;
+    if (reach > inLength / 2 + 1e-9 * inLength || reach > outLength / 2 + 1e-9 * outLength) return null;
+    const bisectorLength = Math.sqrt((ax + bx) ** 2 + (ay + by) ** 2);
+    const toCentre = radius / Math.sqrt((1 - cos) / 2);
+    corners.push({
+      x: v.x + ((ax + bx) / bisectorLength) * toCentre - centre.x,
+      y: v.y + ((ay + by) / bisectorLength) * toCentre - centre.y,
+    });
+  }
+  return corners;
+}
+
 function finish(
   options: BodiesOptions | undefined,
   defaults: BodiesOptions,
@@ -17,40 +54,49 @@ function finish(
 ): MatterBody {
   const settings = Common.extend({}, defaults, options) as BodiesOptions;
   let vertices = points;
-  if (settings.chamfer) {
-    const c = settings.chamfer;
-    vertices = Vertices.chamfer(points, c.radius, c.quality, c.qualityMin, c.qualityMax);
-  }
-  return Body.create({
+  const chamfer = settings.chamfer;
+  if (chamfer)
+    vertices = Vertices.chamfer(
+      points,
+      chamfer.radius,
+      chamfer.quality,
+      chamfer.qualityMin,
+      chamfer.qualityMax,
+    );
+  const body = Body.create({
     ...settings,
     vertices,
-    chamfer: settings.chamfer ? { radius: settings.chamfer.radius ?? 8 } : null,
+    chamfer: chamfer ? { radius: chamfer.radius ?? 8 } : null,
   });
+  // one chamfer radius on every corner of a convex outline the engine holds as one polygon: it
+  // simulates the rounded polygon of exactly that shape (a rounded box, a capsule, a circle) rather
+  // than the many-cornered outline matter draws
+  const given = chamfer?.radius ?? 8;
+  const radius = Array.isArray(given) ? (given.every((r) => r === given[0]) ? given[0] : 0) : given;
+  if (chamfer && radius > 0 && points.length <= 8 && Vertices.isConvex(points.slice())) {
+    const corners = insetCorners(points, radius, Vertices.centre(vertices));
+    if (corners) {
+      Object.defineProperty(body, '_rounded', {
+        value: { corners, radius },
+        writable: true,
+        enumerable: false,
+        configurable: true,
+      });
+    }
+  }
+  return body;
 }
 
 /** matter.js's `Bodies`: factories of common bodies, at world positions in pixels. A plain, mutable module object. */
 export const Bodies = {
   /** A `width` by `height` rectangle centred on (x, y). */
   rectangle(x: number, y: number, width: number, height: number, options?: BodiesOptions): MatterBody {
-    const body = finish(options, { label: 'Rectangle Body', position: { x, y } }, [
+    return finish(options, { label: 'Rectangle Body', position: { x, y } }, [
       { x: 0, y: 0 },
       { x: width, y: 0 },
       { x: width, y: height },
       { x: 0, y: height },
     ]);
-    // one chamfer radius on all four corners: the engine simulates a rounded box (or a capsule, or
-    // a circle) of exactly that shape rather than the many-cornered outline matter draws
-    const radius = options?.chamfer?.radius;
-    const r = Array.isArray(radius) ? (radius.every((v) => v === radius[0]) ? radius[0] : undefined) : radius;
-    if (options?.chamfer && (r ?? 8) > 0) {
-      Object.defineProperty(body, '_rounded', {
-        value: { halfWidth: width / 2, halfHeight: height / 2, radius: r ?? 8 },
-        writable: true,
-        enumerable: false,
-        configurable: true,
-      });
-    }
-    return body;
   },
 
   /** A trapezoid `width` wide at its base, its top `slope` times narrower on each side. */

@@ -56,7 +56,7 @@ export interface MatterBody {
   /** what changed since the engine last built the body's Fulcrum body (not enumerable) */
   _stale?: Stale;
   /** a chamfered rectangle's exact shape (Bodies.rectangle; not enumerable), until its vertices change */
-  _rounded?: { halfWidth: number; halfHeight: number; radius: number } | null;
+  _rounded?: { corners: MatterVector[]; radius: number } | null;
 }
 
 /** What `Body.create` takes: any of a body's fields, and its outline as plain points. */

@@ -68,35 +68,38 @@ function dampingOf(frictionAir: number): number {
   return 4 * VELOCITY_TO_SI * (1 / Math.sqrt(Math.sqrt(kept)) - 1);
 }
 
-type Rounded = { halfWidth: number; halfHeight: number; radius: number };
+type Rounded = { corners: MatterVector[]; radius: number };
 
 /**
- * A chamfered rectangle as the engine's exact shape, about its centre in its own frame: a rounded box,
- * a capsule when the radius takes a whole side, a circle when it takes both.
+ * A chamfered convex outline as the engine's exact shape in the body's frame (the frame its corners
+ * were recorded in, when the body was made): the polygon of its arcs' centres rounded by the radius; a capsule where the arcs take whole sides (a pill), a circle where
+ * they take all of them.
  */
-function roundedShape({ halfWidth, halfHeight, radius }: Rounded): Geometry {
-  const r = Math.min(radius, halfWidth, halfHeight);
-  const a = halfWidth - r;
-  const b = halfHeight - r;
-  const flat = 1e-9 * Math.max(halfWidth, halfHeight);
-  if (a <= flat && b <= flat) return Shape.circle(r);
-  if (b <= flat) return Shape.capsule({ x: -a, y: 0 }, { x: a, y: 0 }, r);
-  if (a <= flat) return Shape.capsule({ x: 0, y: -b }, { x: 0, y: b }, r);
-  return Shape.polygon(
-    [
-      { x: -a, y: -b },
-      { x: a, y: -b },
-      { x: a, y: b },
-      { x: -a, y: b },
-    ],
-    r,
-  );
-}
-
-/** The area of a rectangle whose corners are rounded with `radius`. */
-function roundedArea({ halfWidth, halfHeight, radius }: Rounded): number {
-  const r = Math.min(radius, halfWidth, halfHeight);
-  return 4 * halfWidth * halfHeight - (4 - Math.PI) * r * r;
+function roundedShape({ corners, radius }: Rounded): Geometry {
+  const points: MatterVector[] = [];
+  const near = 1e-6 * radius;
+  for (const p of corners) {
+    if (!points.some((o) => Math.abs(o.x - p.x) <= near && Math.abs(o.y - p.y) <= near)) points.push(p);
+  }
+  if (points.length === 1) return Shape.circle(radius, points[0]);
+  let doubleArea = 0;
+  let extent = 0;
+  let ends = [points[0], points[1]];
+  for (let i = 0; i < points.length; i++) {
+    const p = points[i];
+    const q = points[(i + 1) % points.length];
+    doubleArea += p.x * q.y - q.x * p.y;
+    for (let j = i + 1; j < points.length; j++) {
+      const d = (points[j].x - p.x) ** 2 + (points[j].y - p.y) ** 2;
+      if (d > extent) {
+        extent = d;
+        ends = [p, points[j]];
+      }
+    }
+  }
+  if (points.length === 2 || Math.abs(doubleArea) <= 1e-9 * extent)
+    return Shape.capsule(ends[0], ends[1], radius);
+  return Shape.polygon(points, radius);
 }
 
 /** Turns world point `p` into the frame of a body at `origin` turned by angle (c, s). */
@@ -136,10 +139,7 @@ function buildShapes(sim: Simulated): void {
         density,
       });
     } else if (part._rounded && body.parts.length === 1) {
-      fulcrum.createShape(roundedShape(part._rounded), {
-        ...def,
-        density: part.mass / roundedArea(part._rounded),
-      });
+      fulcrum.createShape(roundedShape(part._rounded), { ...def, density: part.density });
     } else {
       const outline = part.vertices.map((p) => toLocal(p, origin, c, s));
       if (outline.length <= 8) fulcrum.createShape(Shape.polygon(outline), { ...def, density: part.density });

@@ -191,6 +191,32 @@ describe('fulcrum/matter constraints', () => {
   });
 });
 
+describe('fulcrum/matter chamfered polygons', () => {
+  it('a chamfered hexagon and trapezoid are rounded polygons underneath, resting on their flat sides', () => {
+    const Matter = FulcrumMatter;
+    const engine = Matter.Engine.create();
+    const ground = Matter.Bodies.rectangle(400, 610, 800, 60, { isStatic: true });
+    // Bodies.polygon's hexagon has a corner straight down, on which it balances
+    const hexagon = Matter.Bodies.polygon(250, 500, 6, 40, { chamfer: { radius: 10 } });
+    const trapezoid = Matter.Bodies.trapezoid(550, 500, 120, 50, 0.4, { chamfer: { radius: 6 } });
+    Matter.Composite.add(engine.world, [ground, hexagon, trapezoid]);
+    for (let i = 0; i < 180; i++) Matter.Engine.update(engine);
+    for (const body of [hexagon, trapezoid]) {
+      const shapes = engine._fulcrum.bodies.get(body)?.fulcrum.shapes ?? [];
+      expect(shapes.length).toBe(1);
+      const geometry = shapes[0].geometry as { type: string; radius: number };
+      expect(geometry.type).toBe('polygon');
+      expect(geometry.radius).toBeGreaterThan(5);
+    }
+    // the arc at the hexagon's lowest corner: its centre r / sin 60° in from the corner, on the ground's
+    // top (y = 580) r below that; the lowest vertex of each body on the ground
+    expect(Math.abs(hexagon.position.y - (580 - (40 - 10 / Math.sin(Math.PI / 3) + 10)))).toBeLessThan(0.5);
+    for (const body of [hexagon, trapezoid]) {
+      expect(Math.abs(Math.max(...body.vertices.map((v) => v.y)) - 580)).toBeLessThan(0.5);
+    }
+  });
+});
+
 describe('fulcrum/matter chamfered rectangles', () => {
   it('are the exact rounded shape underneath: a pill is a capsule, a rounded box a rounded polygon, both of matter mass', () => {
     const Matter = FulcrumMatter;
