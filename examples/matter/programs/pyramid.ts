@@ -16,7 +16,7 @@ export const pyramid: MatterProgram = {
     });
 
     // fifteen boxes at the bottom from x = 100 to 700, so the pyramid's axis is x = 400
-    const boxes = Composites.pyramid(100, 250, 15, 10, 0, 0, (x: number, y: number) =>
+    const boxes = Composites.pyramid(100, 260, 15, 10, 0, 0, (x: number, y: number) =>
       Bodies.rectangle(x, y, 40, 40, {
         render: { fillStyle: '#5aa9e6', strokeStyle: '#15171d', lineWidth: 1 },
       }),
