@@ -211,6 +211,38 @@ describe('the matter.js page', () => {
     }
   });
 
+  it('lets go of the last program when another is opened: one canvas a pane, the old worlds emptied', async () => {
+    const open = await openProgram('stack', true);
+    try {
+      await open.page.evaluate(() => {
+        const g = (window as unknown as HookWindow).matterGallery;
+        Object.assign(window, { previous: [g.panes.fulcrum, g.panes.matter] });
+      });
+      await open.page.click('a[data-program="pyramid"]');
+      await open.page.waitForFunction(
+        () => (window as unknown as HookWindow).matterGallery.program === 'pyramid',
+      );
+      expect(open.page.url()).toMatch(/matter\.html\?compare=1#pyramid$/);
+      for (const pane of PANES) expect(await open.page.locator(`#pane-${pane} canvas`).count()).toBe(1);
+      const left = await open.page.evaluate(() =>
+        (window as unknown as { previous: (HookPane & { engine: { events: object } })[] }).previous.map(
+          (p) => ({
+            bodies: p.Matter.Composite.allBodies(p.engine.world).length,
+            listeners: Object.keys(p.engine.events ?? {}).length,
+            attached: p.render.canvas.isConnected,
+          }),
+        ),
+      );
+      expect(left).toEqual([
+        { bodies: 0, listeners: 0, attached: false },
+        { bodies: 0, listeners: 0, attached: false },
+      ]);
+      expect(open.errors).toEqual([]);
+    } finally {
+      await open.close();
+    }
+  });
+
   it('keeps the pyramid standing on fulcrum/matter: its top box stays on the axis after 600 updates', async () => {
     const open = await openProgram('pyramid', false);
     try {

@@ -20,7 +20,7 @@ export const cloth: MatterProgram = {
     const columns = 20;
     const clothBody = Composites.softBody(
       160,
-      60,
+      40,
       columns,
       12,
       6,
@@ -38,8 +38,8 @@ export const cloth: MatterProgram = {
 
     Composite.add(engine.world, [
       clothBody,
-      Bodies.circle(300, 420, 70, { isStatic: true, render: { fillStyle: '#5aa9e6' } }),
-      Bodies.rectangle(520, 450, 140, 80, { isStatic: true, render: { fillStyle: '#e6a04b' } }),
+      Bodies.circle(300, 360, 60, { isStatic: true, render: { fillStyle: '#5aa9e6' } }),
+      Bodies.rectangle(500, 340, 120, 60, { isStatic: true, render: { fillStyle: '#e6a04b' } }),
       Bodies.rectangle(400, 600, 820, 40, { isStatic: true, render: { fillStyle: '#3a4150' } }),
     ]);
 
