@@ -106,6 +106,11 @@ export default defineConfig({
     target: 'es2022',
     chunkSizeWarningLimit: 1500,
     rollupOptions: {
+      // the demo gallery, and its page of matter.js programs run on fulcrum/matter and on matter.js
+      input: {
+        index: fileURLToPath(new URL('./examples/index.html', import.meta.url)),
+        matter: fileURLToPath(new URL('./examples/matter.html', import.meta.url)),
+      },
       onwarn(warning, warn) {
         // p5's dependency zod places /*@__PURE__*/ comments where Rollup cannot use them: not ours to fix
         if (warning.code === 'INVALID_ANNOTATION' && warning.id?.includes('/node_modules/')) return;
