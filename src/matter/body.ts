@@ -60,9 +60,14 @@ export interface MatterBody {
 }
 
 /** What `Body.create` takes: any of a body's fields, and its outline as plain points. */
-export type BodyOptions = Omit<Partial<MatterBody>, 'vertices' | 'parts'> & {
+export type BodyOptions = Omit<Partial<MatterBody>, 'vertices' | 'parts' | 'render' | 'collisionFilter'> & {
   vertices?: MatterVector[];
   parts?: MatterBody[];
+  /** matter's look: any of fillStyle, strokeStyle, lineWidth, opacity, visible, sprite (in part) */
+  render?: Partial<Omit<MatterBody['render'], 'sprite'>> & {
+    sprite?: Partial<MatterBody['render']['sprite']>;
+  };
+  collisionFilter?: Partial<MatterBody['collisionFilter']>;
 };
 
 /** What a body's Fulcrum body has to be given again at the next update. */

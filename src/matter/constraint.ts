@@ -34,6 +34,15 @@ export type ConstraintOptions = Partial<Omit<MatterConstraint, 'render'>> & {
   render?: Partial<MatterConstraint['render']>;
 };
 
+/** Marks a mouse constraint's own constraint, which the engine simulates as a Fulcrum mouse joint. */
+export function markPointerConstraint(constraint: MatterConstraint): void {
+  Object.defineProperty(constraint, '_pointer', { value: true, enumerable: false });
+}
+
+export function isPointerConstraint(constraint: MatterConstraint): boolean {
+  return (constraint as { _pointer?: boolean })._pointer === true;
+}
+
 /** The world point of an end: the body's position plus the offset, or the offset itself without a body. */
 function worldPoint(body: MatterBody | null, point: MatterVector): MatterVector {
   return body ? { x: body.position.x + point.x, y: body.position.y + point.y } : { x: point.x, y: point.y };

@@ -1,7 +1,12 @@
 import type { MatterBody } from './body';
 import { Bounds } from './bounds';
 import { Composite } from './composite';
-import { Constraint, type MatterConstraint } from './constraint';
+import {
+  Constraint,
+  type ConstraintOptions,
+  type MatterConstraint,
+  markPointerConstraint,
+} from './constraint';
 import type { MatterEngine } from './engine';
 import { Events } from './events';
 import { type MatterMouse, Mouse, type MouseElement } from './mouse';
@@ -40,9 +45,9 @@ export const MouseConstraint = {
     engine: MatterEngine,
     options: {
       mouse?: MatterMouse;
-      element?: MouseElement;
-      constraint?: Partial<MatterConstraint>;
-      collisionFilter?: MatterMouseConstraint['collisionFilter'];
+      element?: MouseElement | HTMLElement;
+      constraint?: ConstraintOptions;
+      collisionFilter?: Partial<MatterMouseConstraint['collisionFilter']>;
     } = {},
   ): MatterMouseConstraint {
     const mouse = options.mouse ?? Mouse.create(options.element ?? null);
@@ -58,6 +63,7 @@ export const MouseConstraint = {
     });
     // the constraint follows the mouse: its pointA is the mouse's position object itself
     constraint.pointA = mouse.position;
+    markPointerConstraint(constraint);
     const mouseConstraint: MatterMouseConstraint = {
       type: 'mouseConstraint',
       id: constraint.id,
@@ -65,7 +71,7 @@ export const MouseConstraint = {
       element: null,
       body: null,
       constraint,
-      collisionFilter: options.collisionFilter ?? { category: 0x0001, mask: 0xffffffff, group: 0 },
+      collisionFilter: { category: 0x0001, mask: 0xffffffff, group: 0, ...options.collisionFilter },
       events: null,
     };
     Events.on(engine, 'beforeUpdate', () => {

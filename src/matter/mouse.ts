@@ -2,8 +2,8 @@ import type { MatterVector } from './vector';
 
 /** What a matter.js mouse reads from its element (any DOM element, or an object that acts like one). */
 export interface MouseElement {
-  addEventListener(type: string, listener: (event: never) => void, options?: unknown): void;
-  removeEventListener(type: string, listener: (event: never) => void): void;
+  addEventListener(type: string, listener: (event: Event) => void, options?: AddEventListenerOptions): void;
+  removeEventListener(type: string, listener: (event: Event) => void): void;
   getBoundingClientRect(): { left: number; top: number };
   clientWidth: number;
   clientHeight: number;
@@ -30,7 +30,7 @@ export interface MatterMouse {
     mousewheel: Event | null;
   };
   /** the listeners added to the element, to take them off again (not enumerable) */
-  _listeners?: [string, (event: never) => void][];
+  _listeners?: [string, (event: Event) => void][];
 }
 
 type PointerLike = {
@@ -100,7 +100,7 @@ export const Mouse = {
     const touch = (event: PointerLike) => {
       if (event.changedTouches && event.cancelable) event.preventDefault?.();
     };
-    const listeners: [string, (event: never) => void][] = [
+    const listeners: [string, (event: Event) => void][] = [
       [
         'mousemove',
         (event: PointerLike) => {

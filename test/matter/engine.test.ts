@@ -192,7 +192,7 @@ describe('fulcrum/matter constraints', () => {
 });
 
 describe('fulcrum/matter chamfered polygons', () => {
-  it('a chamfered hexagon and trapezoid are rounded polygons underneath, resting on their flat sides', () => {
+  it('a chamfered hexagon and trapezoid are rounded polygons underneath, resting on their lowest arcs', () => {
     const Matter = FulcrumMatter;
     const engine = Matter.Engine.create();
     const ground = Matter.Bodies.rectangle(400, 610, 800, 60, { isStatic: true });
