@@ -19,9 +19,11 @@ const CORE_BUDGET = 60_000;
  * between the two it warns. 69.4 kB when the check was written; 76.6 kB once issue 22's concave
  * decomposition, SVG paths and run-time shape editing and issue 24's layers were in; 78.9 kB with
  * issue 22's chains (the one-sided seam rule, its checks and casts) and svgShapes (features the core
- * carries for every user, not growth of the engine's own code). Issue 23 holds the 60 kB goal.
+ * carries for every user, not growth of the engine's own code); 79.5 kB with issue 21's engine
+ * features for fulcrum/matter (Body.setMassData, the frictionMixing option). Issue 23 holds the 60 kB
+ * goal.
  */
-const CORE_CEILING = 79_500;
+const CORE_CEILING = 80_000;
 
 const root = path.resolve(import.meta.dirname, '..');
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'fulcrum-pack-'));
