@@ -3,7 +3,7 @@ import { MouseJoint } from '../joints/mouse-joint';
 import { makeRot } from '../math/rot';
 import { type MatterBody, VELOCITY_TO_SI } from './body';
 import { Constraint, isPointerConstraint, type MatterConstraint } from './constraint';
-import type { FulcrumLink } from './simulation';
+import type { FulcrumLink, JointRecord } from './simulation';
 import type { MatterVector } from './vector';
 
 /** Constraints as Fulcrum joints: rigid ones as pins and rods, soft ones as springs of matter's period. */
@@ -80,20 +80,45 @@ function createJoint(link: FulcrumLink, constraint: MatterConstraint): Joint | n
   });
 }
 
+/** Whether the constraint still is what its joint was made from (a mouse joint's target aside). */
+function unchanged(record: JointRecord, constraint: MatterConstraint): boolean {
+  const { pointA, pointB } = constraint;
+  return (
+    record.bodyA === constraint.bodyA &&
+    record.bodyB === constraint.bodyB &&
+    record.length === constraint.length &&
+    record.stiffness === constraint.stiffness &&
+    record.damping === constraint.damping &&
+    (record.worldA === null || (record.worldA.x === pointA.x && record.worldA.y === pointA.y)) &&
+    (record.worldB === null || (record.worldB.x === pointB.x && record.worldB.y === pointB.y))
+  );
+}
+
 /**
- * Keeps each constraint's joint in step with it before an update: made again when its bodies
- * changed (a mouse constraint grabbing or letting go), a mouse joint's target moved to `pointA`.
+ * Keeps each constraint's joint in step with it before an update: made again when the program changed
+ * it (its bodies, as a mouse constraint grabbing or letting go; its length, stiffness or damping; a
+ * world point it is pinned to), a mouse joint's target moved to `pointA`.
  */
 export function syncConstraints(link: FulcrumLink): void {
   for (const [constraint, record] of link.joints) {
-    if (record.joint !== null && (record.bodyA !== constraint.bodyA || record.bodyB !== constraint.bodyB)) {
+    const pointer = record.joint instanceof MouseJoint;
+    if (record.joint !== null && !pointer && !unchanged(record, constraint)) {
       if (record.joint.isValid) link.world.destroyJoint(record.joint);
+      record.joint = null;
+    }
+    if (pointer && (record.bodyA !== constraint.bodyA || record.bodyB !== constraint.bodyB)) {
+      if (record.joint?.isValid) link.world.destroyJoint(record.joint);
       record.joint = null;
     }
     if (record.joint === null && (constraint.bodyA !== null || constraint.bodyB !== null)) {
       record.joint = createJoint(link, constraint);
       record.bodyA = constraint.bodyA;
       record.bodyB = constraint.bodyB;
+      record.length = constraint.length;
+      record.stiffness = constraint.stiffness;
+      record.damping = constraint.damping;
+      record.worldA = constraint.bodyA === null ? { x: constraint.pointA.x, y: constraint.pointA.y } : null;
+      record.worldB = constraint.bodyB === null ? { x: constraint.pointB.x, y: constraint.pointB.y } : null;
     }
     if (record.joint instanceof MouseJoint) record.joint.setTarget(constraint.pointA);
   }
@@ -133,7 +158,17 @@ export function syncConstraintMembers(link: FulcrumLink, constraints: readonly M
     link.joints.delete(constraint);
   }
   for (const constraint of present) {
-    if (!link.joints.has(constraint)) link.joints.set(constraint, { joint: null, bodyA: null, bodyB: null });
+    if (link.joints.has(constraint)) continue;
+    link.joints.set(constraint, {
+      joint: null,
+      bodyA: null,
+      bodyB: null,
+      length: 0,
+      stiffness: 0,
+      damping: 0,
+      worldA: null,
+      worldB: null,
+    });
   }
   for (const record of link.joints.values()) if (record.joint && !record.joint.isValid) record.joint = null;
 }

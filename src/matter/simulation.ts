@@ -43,8 +43,15 @@ interface SurfaceFields {
 
 export interface JointRecord {
   joint: Joint | null;
+  /** what the joint was made from: a change to any of them makes it again */
   bodyA: MatterBody | null;
   bodyB: MatterBody | null;
+  length: number;
+  stiffness: number;
+  damping: number;
+  /** the world points of ends without a body */
+  worldA: MatterVector | null;
+  worldB: MatterVector | null;
 }
 
 export interface FulcrumLink {

@@ -95,4 +95,20 @@ describe('fulcrum/matter constraints as matter programs use them', () => {
       ).toBeLessThan(0.33);
     }
   });
+  it('a program moving the world point of a rigid constraint, or changing its length, is followed, as on matter.js', () => {
+    for (const [name, Matter] of both) {
+      const engine = Matter.Engine.create();
+      const box = Matter.Bodies.rectangle(300, 200, 30, 30, { frictionAir: 0.05 });
+      const rope = Matter.Constraint.create({ pointA: { x: 300, y: 100 }, bodyB: box, stiffness: 1 });
+      Matter.Composite.add(engine.world, [box, rope]);
+      for (let i = 0; i < 60; i++) Matter.Engine.update(engine, 1000 / 60);
+      expect(Math.abs(box.position.y - 200), name).toBeLessThan(1);
+      rope.pointA = { x: 500, y: 100 };
+      rope.length = 150;
+      for (let i = 0; i < 600; i++) Matter.Engine.update(engine, 1000 / 60);
+      // hanging still under the new point, the new length below it
+      expect(Math.abs(box.position.x - 500), name).toBeLessThan(2);
+      expect(Math.abs(box.position.y - 250), name).toBeLessThan(2);
+    }
+  });
 });
