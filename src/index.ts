@@ -3,7 +3,14 @@
  * @module fulcrum
  */
 
-export { Body, type BodyDef, type BodyType, type MassData } from './api/body';
+export {
+  Body,
+  type BodyDef,
+  type BodyType,
+  type ContactData,
+  type ContactPointData,
+  type MassData,
+} from './api/body';
 export type {
   BodyEvent,
   ContactBeginEvent,

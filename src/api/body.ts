@@ -15,6 +15,7 @@ import type { Joint } from '../joints/joint';
 import { makeRotInto, rotAngle } from '../math/rot';
 import type { Vec2 } from '../math/vec2';
 import { BodyFlag, BodyKind, BodyState } from '../store/body-store';
+import { ContactFlag } from '../store/contact-store';
 import type { WorldCore } from '../world/world-core';
 import { changeBodyKind, replaceShapeGeometry, sleepIsland } from '../world/world-edits';
 import type { WorldHandles } from './handles';
@@ -28,6 +29,22 @@ export interface MassData {
   mass: number;
   inertia: number;
   center?: Vec2;
+}
+
+/** A point of a touching contact: where, how far apart its surfaces are (negative: overlapping), and the normal impulse of the last substep. */
+export interface ContactPointData {
+  point: Vec2;
+  separation: number;
+  normalImpulse: number;
+}
+
+/** A touching contact of a body (Body.getContacts). */
+export interface ContactData {
+  shapeA: ShapeHandle;
+  shapeB: ShapeHandle;
+  /** unit normal, from shape A to shape B */
+  normal: Vec2;
+  points: ContactPointData[];
 }
 
 const MASS_DATA_KEYS = ['mass', 'inertia', 'center'] as const;
@@ -214,6 +231,40 @@ export class Body {
   }
 
   /** shapes in creation order */
+  /**
+   * The body's touching contacts as of the last step (sensors have none): for each, its two shapes,
+   * the normal from shape A to shape B, and its one or two points with their separation (negative
+   * when overlapping) and the normal impulse of the last substep there (the step applies about
+   * `world.subSteps` times as much).
+   */
+  getContacts(): ContactData[] {
+    const b = this.check();
+    const contacts = this.core.contacts;
+    const shapes = this.handles.shapes;
+    const result: ContactData[] = [];
+    for (let e = this.core.bodies.contactHead[b]; e !== -1; e = contacts.edgeNext[e]) {
+      const c = e >> 1;
+      if ((contacts.flags[c] & (ContactFlag.TOUCHING | ContactFlag.SENSOR)) !== ContactFlag.TOUCHING)
+        continue;
+      const points: ContactPointData[] = [];
+      for (let j = 0; j < contacts.pointCount[c]; j++) {
+        const k = c * 2 + j;
+        points.push({
+          point: { x: contacts.pointX[k], y: contacts.pointY[k] },
+          separation: contacts.separation[k],
+          normalImpulse: contacts.normalImpulse[k],
+        });
+      }
+      result.push({
+        shapeA: shapes[contacts.shapeA[c]]!,
+        shapeB: shapes[contacts.shapeB[c]]!,
+        normal: { x: contacts.normalX[c], y: contacts.normalY[c] },
+        points,
+      });
+    }
+    return result;
+  }
+
   get shapes(): ShapeHandle[] {
     const b = this.check();
     const result: ShapeHandle[] = [];

@@ -1,6 +1,7 @@
 import type { WorldEvents } from '../api/events';
 import type { ShapeHandle } from '../api/shape';
 import type { MatterBody } from './body';
+import type { FulcrumLink } from './simulation';
 import type { MatterVector } from './vector';
 
 /** A collision pair as matter.js reports it in its collision events. */
@@ -128,6 +129,48 @@ function end(
 }
 
 /**
+ * A pair's collision as matter gives it, from a contact whose normal runs from the pair's bodyA to its
+ * bodyB: matter's normal runs the other way (from B to A), its depth is how far the bodies overlap.
+ */
+function setCollision(
+  pair: MatterPair,
+  nx: number,
+  ny: number,
+  points: readonly MatterVector[],
+  depth: number,
+): void {
+  const collision = pair.collision;
+  collision.normal = { x: -nx, y: -ny };
+  collision.tangent = { x: ny, y: -nx };
+  collision.depth = depth;
+  collision.supports = points.map((p) => ({ x: p.x, y: p.y }));
+}
+
+/**
+ * Brings the collisions of the active pairs up to the last step (normal, depth, supports), from the
+ * simulated bodies' contacts, each contact once (from its body A's side, or from B's when A is static).
+ */
+export function refreshCollisions(pairs: MatterPairs, link: FulcrumLink): void {
+  for (const sim of link.list) {
+    if (sim.body.isStatic) continue;
+    for (const contact of sim.fulcrum.getContacts()) {
+      const first = contact.shapeA.body === sim.fulcrum;
+      if (!first && contact.shapeA.body.type === 'dynamic') continue;
+      const a = contact.shapeA.userData as MatterBody;
+      const b = contact.shapeB.userData as MatterBody;
+      const pair = pairs.table[pairId(a, b)];
+      if (!pair?.isActive) continue;
+      let depth = 0;
+      for (const p of contact.points) depth = Math.max(depth, -p.separation);
+      const { x, y } = contact.normal;
+      const points = contact.points.map((p) => p.point);
+      if (pair.bodyA === a) setCollision(pair, x, y, points, depth);
+      else setCollision(pair, -x, -y, points, depth);
+    }
+  }
+}
+
+/**
  * Turns the contacts and sensor overlaps the last step began and ended into matter's pair changes, in
  * matter's order; `active` (the pairs active before the update and still after it) only when asked.
  */
@@ -143,12 +186,8 @@ export function updatePairs(
     const a = (event.shapeA as ShapeHandle).userData as MatterBody;
     const b = (event.shapeB as ShapeHandle).userData as MatterBody;
     const pair = begin(pairs, touching, a, b, timestamp, changes);
-    const collision = pair.collision;
-    collision.bodyA = a;
-    collision.bodyB = b;
-    collision.normal = { x: event.normal.x, y: event.normal.y };
-    collision.tangent = { x: -event.normal.y, y: event.normal.x };
-    collision.supports = event.points.map((p) => ({ x: p.x, y: p.y }));
+    if (pair.bodyA === a) setCollision(pair, event.normal.x, event.normal.y, event.points, 0);
+    else setCollision(pair, -event.normal.x, -event.normal.y, event.points, 0);
   }
   for (const event of events.sensorBegin) {
     const a = (event.sensorShape as ShapeHandle).userData as MatterBody;

@@ -1,6 +1,6 @@
 import { World as FulcrumWorld } from '../api/world';
 import { Limits } from '../core/limits';
-import { type MatterPairs, updatePairs } from './collision-pairs';
+import { type MatterPairs, refreshCollisions, updatePairs } from './collision-pairs';
 import { Common } from './common';
 import { Composite, type MatterComposite } from './composite';
 import { syncConstraintMembers, syncConstraints, turnConstraintPoints } from './constraint-joints';
@@ -148,6 +148,7 @@ export const Engine = {
     // the pairs active before this update and still active after it: built only when listened to
     const listensActive = (engine.events?.collisionActive?.length ?? 0) > 0;
     const changes = updatePairs(engine.pairs, link.touching, world.events, timing.timestamp, listensActive);
+    if (listensActive) refreshCollisions(engine.pairs, link);
     if (changes.start.length > 0)
       Events.trigger(engine, 'collisionStart', { pairs: changes.start, ...event });
     if (changes.active.length > 0)

@@ -163,6 +163,42 @@ describe('fulcrum/matter collision pairs', () => {
     }
   });
 
+  it("a pair's collision: matter's normal (from bodyB to bodyA), a depth and supports under the box, kept current while active", () => {
+    const seen: Record<string, { normal: { x: number; y: number }; depth: number; supportsY: number[] }> = {};
+    for (const [name, Matter] of both) {
+      const engine = Matter.Engine.create();
+      const ground = Matter.Bodies.rectangle(400, 620, 800, 40, { isStatic: true });
+      const box = Matter.Bodies.rectangle(400, 500, 40, 40);
+      Matter.Composite.add(engine.world, [ground, box]);
+      let updates = 0;
+      Matter.Events.on(engine, 'collisionActive', (event) => {
+        if (++updates !== 30) return;
+        const [pair] = event.pairs as {
+          bodyA: unknown;
+          bodyB: unknown;
+          collision: { normal: { x: number; y: number }; depth: number; supports: { y: number }[] };
+        }[];
+        // the same sense whichever body is A: from B's side towards A's
+        const sign = pair.bodyA === ground ? 1 : -1;
+        seen[name] = {
+          normal: { x: sign * pair.collision.normal.x, y: sign * pair.collision.normal.y },
+          depth: pair.collision.depth,
+          supportsY: pair.collision.supports.map((p) => p.y),
+        };
+      });
+      for (let i = 0; i < 90; i++) Matter.Engine.update(engine, 1000 / 60);
+    }
+    for (const name of ['matter-js', 'fulcrum/matter']) {
+      const { normal, depth, supportsY } = seen[name];
+      // ground is A: the normal points from the box down to the ground (y down)
+      expect(normal.x, name).toBeCloseTo(0, 9);
+      expect(normal.y, name).toBeCloseTo(1, 9);
+      expect(depth, name).toBeGreaterThanOrEqual(0);
+      expect(depth, name).toBeLessThan(1);
+      for (const y of supportsY) expect(Math.abs(y - 600), name).toBeLessThan(1);
+    }
+  });
+
   it('a part of many corners (several shapes underneath) is one pair: begun with its first shape, ended with its last', () => {
     const Matter = FulcrumMatter;
     const engine = Matter.Engine.create();
