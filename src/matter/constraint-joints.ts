@@ -44,11 +44,12 @@ function createJoint(link: FulcrumLink, constraint: MatterConstraint): Joint | n
   const hertz = (Math.sqrt(c) * VELOCITY_TO_SI) / (2 * Math.PI);
   if (constraint.bodyA === null && constraint.bodyB !== null && isPointerConstraint(constraint)) {
     // a mouse constraint's pull of a body to the pointer: a mouse joint, whose target follows pointA
-    // (see syncConstraints)
+    // (see syncConstraints). matter's mouse constraint has angularStiffness 1, which takes away the
+    // turn its pull would give: the joint then holds the centre of mass, pointB away from the pointer
     return link.world.createJoint({
       type: 'mouse',
       body: b.fulcrum,
-      target: Constraint.pointBWorld(constraint),
+      target: holdsCentre(constraint) ? constraint.bodyB.position : Constraint.pointBWorld(constraint),
       hertz,
       // a hundred times the body's weight under matter's default gravity (1000 px/s²): the pull is
       // the spring's, not a cap's
@@ -78,6 +79,17 @@ function createJoint(link: FulcrumLink, constraint: MatterConstraint): Joint | n
     dampingRatio: Math.min(constraint.damping, 1),
     collideConnected: true,
   });
+}
+
+/** Whether a mouse constraint's pull leaves its body's turning alone (matter's angularStiffness 1). */
+function holdsCentre(constraint: MatterConstraint): boolean {
+  return constraint.angularStiffness >= 1;
+}
+
+/** Where a mouse constraint's joint pulls to: the pointer, or for one that holds the centre, pointB short of it. */
+function pointerTarget(constraint: MatterConstraint): MatterVector {
+  const { pointA, pointB } = constraint;
+  return holdsCentre(constraint) ? { x: pointA.x - pointB.x, y: pointA.y - pointB.y } : pointA;
 }
 
 /** Whether the constraint still is what its joint was made from (a mouse joint's target aside). */
@@ -120,7 +132,7 @@ export function syncConstraints(link: FulcrumLink): void {
       record.worldA = constraint.bodyA === null ? { x: constraint.pointA.x, y: constraint.pointA.y } : null;
       record.worldB = constraint.bodyB === null ? { x: constraint.pointB.x, y: constraint.pointB.y } : null;
     }
-    if (record.joint instanceof MouseJoint) record.joint.setTarget(constraint.pointA);
+    if (record.joint instanceof MouseJoint) record.joint.setTarget(pointerTarget(constraint));
   }
 }
 

@@ -73,4 +73,30 @@ describe('fulcrum/matter Mouse and MouseConstraint', () => {
       expect(seen, name).toEqual(['start', 'down', 'end']);
     }
   });
+  it('a box grabbed by its corner and lifted is not swung round by the pull (angularStiffness 1), as on matter.js', () => {
+    for (const [name, Matter] of [
+      ['matter-js', RealMatter as M],
+      ['fulcrum/matter', FulcrumMatter],
+    ] as const) {
+      const engine = Matter.Engine.create();
+      const ground = Matter.Bodies.rectangle(400, 590, 800, 20, { isStatic: true });
+      const box = Matter.Bodies.rectangle(400, 550, 80, 60);
+      const canvas = fakeCanvas();
+      const mouse = Matter.Mouse.create(canvas as never);
+      const drag = Matter.MouseConstraint.create(engine, { mouse });
+      Matter.Composite.add(engine.world, [ground, box, drag as never]);
+      for (let i = 0; i < 30; i++) Matter.Engine.update(engine);
+      // near the top left corner, 35 px left of the centre and 25 above it
+      canvas.fire('mousedown', 365, 525);
+      Matter.Engine.update(engine);
+      for (let i = 1; i <= 20; i++) {
+        canvas.fire('mousemove', 365, 525 - 10 * i);
+        Matter.Engine.update(engine);
+      }
+      for (let i = 0; i < 120; i++) Matter.Engine.update(engine);
+      // hanging by a corner it would turn until its centre was under the pointer (about 0.95 rad)
+      expect(Math.abs(box.angle), name).toBeLessThan(0.1);
+      expect(Math.abs(box.position.x - 400), name).toBeLessThan(5);
+    }
+  });
 });
