@@ -134,9 +134,10 @@ export const Common = {
   random(min?: number, max?: number): number {
     const lo = min ?? 0;
     const hi = max ?? 1;
-    // a linear congruential generator (the constants of Numerical Recipes)
-    Common._seed = (Common._seed * 1664525 + 1013904223) % 4294967296;
-    return lo + (Common._seed / 4294967296) * (hi - lo);
+    // matter's own linear congruential generator (modulus 233280), so that a program seeded the same
+    // builds the same scene on both
+    Common._seed = (Common._seed * 9301 + 49297) % 233280;
+    return lo + (Common._seed / 233280) * (hi - lo);
   },
 
   /** A CSS hex colour ('#f80' or '#ff8800') as a number. */

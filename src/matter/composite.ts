@@ -1,5 +1,6 @@
 import type { MatterBody } from './body';
 import { Body } from './body';
+import { Bounds, type MatterBounds } from './bounds';
 import { Common } from './common';
 import type { MatterConstraint } from './constraint';
 import { Events } from './events';
@@ -72,24 +73,19 @@ export const Composite = {
             );
             break;
           }
-          if (!composite.bodies.includes(item as MatterBody)) composite.bodies.push(item as MatterBody);
+          Composite.addBody(composite, item as MatterBody);
           break;
         case 'constraint':
-          if (!composite.constraints.includes(item as MatterConstraint))
-            composite.constraints.push(item as MatterConstraint);
+          Composite.addConstraint(composite, item as MatterConstraint);
           break;
         case 'composite':
-          if (item !== composite && !composite.composites.includes(item as MatterComposite)) {
-            (item as MatterComposite).parent = composite;
-            composite.composites.push(item as MatterComposite);
-          }
+          Composite.addComposite(composite, item as MatterComposite);
           break;
         case 'mouseConstraint':
-          Composite.add(composite, (item as unknown as { constraint: Member }).constraint);
+          Composite.addConstraint(composite, (item as { constraint: MatterConstraint }).constraint);
           break;
       }
     }
-    Composite.setModified(composite, true, true, false);
     Events.trigger(composite, 'afterAdd', { object });
     return composite;
   },
@@ -99,28 +95,111 @@ export const Composite = {
     const objects = Array.isArray(object) ? object : [object];
     Events.trigger(composite, 'beforeRemove', { object });
     for (const item of objects) {
-      const list =
-        item.type === 'body'
-          ? composite.bodies
-          : item.type === 'composite'
-            ? composite.composites
-            : item.type === 'mouseConstraint'
-              ? null
-              : composite.constraints;
-      if (item.type === 'mouseConstraint') {
-        Composite.remove(composite, (item as unknown as { constraint: Member }).constraint, deep);
-        continue;
+      switch (item.type) {
+        case 'body':
+          Composite.removeBody(composite, item as MatterBody, deep);
+          break;
+        case 'constraint':
+          Composite.removeConstraint(composite, item as MatterConstraint, deep);
+          break;
+        case 'composite':
+          Composite.removeComposite(composite, item as MatterComposite, deep);
+          break;
+        case 'mouseConstraint':
+          Composite.removeConstraint(composite, (item as { constraint: MatterConstraint }).constraint, deep);
+          break;
       }
-      const index = (list as Member[]).indexOf(item);
-      if (index !== -1) {
-        (list as Member[]).splice(index, 1);
-        if (item.type === 'body') Body.set(item as MatterBody, 'isSleeping', false);
-      }
-      if (deep) for (const child of composite.composites) Composite.remove(child, item, true);
     }
-    Composite.setModified(composite, true, true, false);
     Events.trigger(composite, 'afterRemove', { object });
     return composite;
+  },
+
+  /** Adds one body (no events). */
+  addBody(composite: MatterComposite, body: MatterBody): MatterComposite {
+    if (!composite.bodies.includes(body)) composite.bodies.push(body);
+    Composite.setModified(composite, true, true, false);
+    return composite;
+  },
+
+  /** Removes one body, from nested composites too when `deep` (no events); it wakes if it slept. */
+  removeBody(composite: MatterComposite, body: MatterBody, deep = false): MatterComposite {
+    const index = composite.bodies.indexOf(body);
+    if (index !== -1) Composite.removeBodyAt(composite, index);
+    if (deep) for (const child of composite.composites) Composite.removeBody(child, body, true);
+    return composite;
+  },
+
+  removeBodyAt(composite: MatterComposite, position: number): MatterComposite {
+    const [body] = composite.bodies.splice(position, 1);
+    if (body) Body.set(body, 'isSleeping', false);
+    Composite.setModified(composite, true, true, false);
+    return composite;
+  },
+
+  /** Adds one constraint (no events). */
+  addConstraint(composite: MatterComposite, constraint: MatterConstraint): MatterComposite {
+    if (!composite.constraints.includes(constraint)) composite.constraints.push(constraint);
+    Composite.setModified(composite, true, true, false);
+    return composite;
+  },
+
+  removeConstraint(composite: MatterComposite, constraint: MatterConstraint, deep = false): MatterComposite {
+    const index = composite.constraints.indexOf(constraint);
+    if (index !== -1) Composite.removeConstraintAt(composite, index);
+    if (deep) for (const child of composite.composites) Composite.removeConstraint(child, constraint, true);
+    return composite;
+  },
+
+  removeConstraintAt(composite: MatterComposite, position: number): MatterComposite {
+    composite.constraints.splice(position, 1);
+    Composite.setModified(composite, true, true, false);
+    return composite;
+  },
+
+  /** Makes `child` a composite of `composite` (no events). */
+  addComposite(composite: MatterComposite, child: MatterComposite): MatterComposite {
+    if (child !== composite && !composite.composites.includes(child)) {
+      child.parent = composite;
+      composite.composites.push(child);
+    }
+    Composite.setModified(composite, true, true, false);
+    return composite;
+  },
+
+  removeComposite(composite: MatterComposite, child: MatterComposite, deep = false): MatterComposite {
+    const index = composite.composites.indexOf(child);
+    if (index !== -1) Composite.removeCompositeAt(composite, index);
+    if (deep) for (const nested of composite.composites) Composite.removeComposite(nested, child, true);
+    return composite;
+  },
+
+  removeCompositeAt(composite: MatterComposite, position: number): MatterComposite {
+    composite.composites.splice(position, 1);
+    Composite.setModified(composite, true, true, false);
+    return composite;
+  },
+
+  /** Moves `objects` from composite `from` to composite `to`. */
+  move(from: MatterComposite, objects: Member | Member[], to: MatterComposite): MatterComposite {
+    Composite.remove(from, objects);
+    Composite.add(to, objects);
+    return from;
+  },
+
+  /** Gives every object in the composite a new id. */
+  rebase(composite: MatterComposite): MatterComposite {
+    const objects: { id: number }[] = [
+      ...Composite.allBodies(composite),
+      ...Composite.allConstraints(composite),
+      ...Composite.allComposites(composite),
+    ];
+    for (const object of objects) object.id = Common.nextId();
+    return composite;
+  },
+
+  /** The bounds of every body in the composite and its descendants. */
+  bounds(composite: MatterComposite): MatterBounds {
+    return Bounds.create(Composite.allBodies(composite).flatMap((body) => body.vertices));
   },
 
   /** Every body in the composite and its descendants. */

@@ -90,6 +90,8 @@ export const Engine = {
       },
       settings,
     ) as unknown as MatterEngine;
+    // matter 0.20 keeps its older world.gravity as the same object as engine.gravity
+    engine.world.gravity = engine.gravity;
     // made at the first update (or first look), once the program has set its gravity
     let link: FulcrumLink | null = null;
     Object.defineProperty(engine, '_fulcrum', {

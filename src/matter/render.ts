@@ -330,6 +330,20 @@ export const Render = {
     }
   },
 
+  /** Sets the context to draw in world coordinates within the render's bounds (its view). */
+  startViewTransform(render: MatterRender): void {
+    const { canvas, bounds } = render;
+    const sx = canvas.width / (bounds.max.x - bounds.min.x);
+    const sy = canvas.height / (bounds.max.y - bounds.min.y);
+    render.context.setTransform(sx, 0, 0, sy, -bounds.min.x * sx, -bounds.min.y * sy);
+  },
+
+  /** Sets the context back to the canvas's own pixels (at the pixel ratio). */
+  endViewTransform(render: MatterRender): void {
+    const ratio = render.options.pixelRatio;
+    render.context.setTransform(ratio, 0, 0, ratio, 0, 0);
+  },
+
   /** Draws the world once: background, bodies, constraints, and what the options ask for. */
   world(render: MatterRender, time?: number): void {
     const { context: c, options, canvas } = render;
@@ -338,14 +352,8 @@ export const Render = {
     c.setTransform(1, 0, 0, 1, 0, 0);
     c.fillStyle = options.wireframes ? options.wireframeBackground : options.background;
     c.fillRect(0, 0, canvas.width, canvas.height);
-    const ratio = options.pixelRatio;
-    if (options.hasBounds) {
-      const sx = canvas.width / (render.bounds.max.x - render.bounds.min.x);
-      const sy = canvas.height / (render.bounds.max.y - render.bounds.min.y);
-      c.setTransform(sx, 0, 0, sy, -render.bounds.min.x * sx, -render.bounds.min.y * sy);
-    } else {
-      c.setTransform(ratio, 0, 0, ratio, 0, 0);
-    }
+    if (options.hasBounds) Render.startViewTransform(render);
+    else Render.endViewTransform(render);
     const bodies = Composite.allBodies(render.engine.world).filter((body) =>
       options.hasBounds ? Bounds.overlaps(body.bounds, render.bounds) : true,
     );
