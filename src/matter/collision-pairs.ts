@@ -78,7 +78,7 @@ function createPair(a: MatterBody, b: MatterBody, timestamp: number): MatterPair
  * How many shape pairs touch between the two parts of each active pair (a concave part is several
  * shapes): a matter pair starts with the first and ends with the last.
  */
-export type TouchCounts = Map<MatterPair, number>;
+export type TouchCounts = Map<object, number>;
 
 function begin(
   pairs: MatterPairs,

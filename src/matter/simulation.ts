@@ -5,7 +5,6 @@ import type { Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
 import { makeRot } from '../math/rot';
 import { type MatterBody, Stale, VELOCITY_TO_SI } from './body';
-import type { TouchCounts } from './collision-pairs';
 import { Composite, type MatterComposite } from './composite';
 import type { MatterConstraint } from './constraint';
 import { Events } from './events';
@@ -64,7 +63,8 @@ export interface FulcrumLink {
   /** the simulated bodies, in the order they joined the world */
   list: Simulated[];
   bodies: Map<MatterBody, Simulated>;
-  touching: TouchCounts;
+  /** how many shape pairs touch in each active matter pair (see collision-pairs.ts) */
+  touching: Map<object, number>;
 }
 
 /**
