@@ -9,7 +9,8 @@
  * every window. Quality figures take the worst round, and the simulated time the shortest: the
  * engines are deterministic, but a slow engine's run stops at the time budget after fewer windows,
  * so its final figures can differ from round to round. A run that failed in any round is reported
- * as that failure.
+ * as that failure. Cold starts take the median round's figures, each on its own; one that never
+ * settled in any round is reported as not settled.
  */
 import { type Quality, type RunResult, summarize } from './result';
 
@@ -46,6 +47,20 @@ export function mergeRounds(rounds: readonly (readonly RunResult[])[]): RunResul
     const windowMs = runs.flatMap((run) => run.windowMs!);
     const roundMedians = runs.map((run) => summarize(run.windowMs!).median);
     const all = summarize(windowMs);
+    // the cold start of each round is one fresh process: the median round's figures, field by field
+    const middle = (values: number[]) => summarize(values).median;
+    const colds = runs.map((run) => run.coldStart).filter((c) => c !== undefined);
+    const settled = colds.map((c) => c.settledSteps);
+    const coldStart =
+      colds.length === runs.length
+        ? {
+            firstStepMs: middle(colds.map((c) => c.firstStepMs)),
+            first60Ms: middle(colds.map((c) => c.first60Ms)),
+            warmFirst60Ms: middle(colds.map((c) => c.warmFirst60Ms)),
+            settledSteps: settled.includes(null) ? null : middle(settled as number[]),
+            settledMs: settled.includes(null) ? null : middle(colds.map((c) => c.settledMs as number)),
+          }
+        : undefined;
     let quality = first.quality!;
     for (const run of runs) quality = worstQuality(quality, run.quality!);
     return {
@@ -55,6 +70,7 @@ export function mergeRounds(rounds: readonly (readonly RunResult[])[]): RunResul
       msPerStep: { median: summarize(roundMedians).median, min: all.min, max: all.max },
       rounds: runs.length,
       roundMedians,
+      coldStart,
       quality,
     };
   });

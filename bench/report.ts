@@ -87,6 +87,26 @@ export function formatReport(
     ),
   );
 
+  if (results.some((r) => r.coldStart)) {
+    const coldCell = (r: RunResult | undefined): string => {
+      const c = r?.coldStart;
+      if (!c) return '-';
+      const settled = c.settledMs === null ? 'never' : `${(c.settledMs / 1000).toFixed(2)} s`;
+      return `${formatMs(c.firstStepMs)} / ${formatMs(c.first60Ms)} / ${settled}`;
+    };
+    out.push('');
+    out.push(
+      'cold start in a fresh process (first step ms / mean of the first 60 steps ms / wall time until',
+    );
+    out.push('the steps stay within 10 % of the same steps run warmed)');
+    out.push(
+      table(
+        ['scene', ...engines.map((e) => e.label)],
+        scenes.map((s) => [s, ...engines.map((e) => coldCell(find(e.id, s)))]),
+      ),
+    );
+  }
+
   const failures = results.filter((r) => !r.ok);
   if (failures.length > 0) {
     out.push('');

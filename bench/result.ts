@@ -22,6 +22,19 @@ export interface Quality {
   finite: boolean;
 }
 
+/** An engine's first steps in a fresh process (its JIT cold), against the same steps warmed. */
+export interface ColdStart {
+  /** the very first step, ms */
+  firstStepMs: number;
+  /** mean of the first 60 steps, ms */
+  first60Ms: number;
+  /** mean of the same 60 steps of the scene once the engine is warmed, ms */
+  warmFirst60Ms: number;
+  /** steps (and their wall time, ms) until the cold steps stay within 10 % of the warmed ones */
+  settledSteps: number | null;
+  settledMs: number | null;
+}
+
 export interface RunResult {
   engine: string;
   scene: string;
@@ -41,11 +54,12 @@ export interface RunResult {
   /** ms per step of each timed window, in order (of every round, when merged: see merge-rounds.ts) */
   windowMs?: number[];
   msPerStep?: Timing;
+  coldStart?: ColdStart;
   /** rounds merged into this result, and the median of each round's windows */
   rounds?: number;
   roundMedians?: number[];
-  /** wall time of loading the engine, the free-fall check, the JIT warm-up and building the scene, ms */
-  setupMs?: { load: number; freeFall: number; jitWarmup: number; build: number };
+  /** wall time of loading the engine, the cold run (the JIT warm-up), the free-fall check and building the scene, ms */
+  setupMs?: { load: number; jitWarmup: number; freeFall: number; build: number };
   quality?: Quality;
 }
 

@@ -1,7 +1,7 @@
 /**
- * One engine on one scene, in its own process: load the engine, check free fall, run the scene on a
- * throwaway world until the engine's compilers have settled, build the scene anew, warm up, then time
- * windows of steps; print one RESULT line of JSON on stdout.
+ * One engine on one scene, in its own process: load the engine, run the scene on a throwaway world
+ * (its cold start, each step timed) until the engine's compilers have settled, check free fall, build
+ * the scene anew, warm up, then time windows of steps; print one RESULT line of JSON on stdout.
  * Usage: node --import tsx bench/worker.ts <engine> <scene> [--quick]
  */
 import { freeFall, sceneBuilders } from '../scenes/index';
@@ -17,7 +17,7 @@ import {
   maxDisplacement,
   maxJointSeparation,
 } from './quality';
-import { RESULT_PREFIX, type RunResult, summarize } from './result';
+import { type ColdStart, RESULT_PREFIX, type RunResult, summarize } from './result';
 
 const DT = 1 / 60;
 /**
@@ -37,6 +37,44 @@ const FULL = { jitSteps: 600, jitMs: 1_000, warmup: 60, window: 60, windows: 9, 
  */
 const QUICK = { jitSteps: 300, jitMs: 400, warmup: 60, window: 10, windows: 3, budgetMs: 2_000 };
 const MIN_WINDOWS = 3;
+
+/** steps the cold run takes at least: the issue's "first 60 steps" */
+const COLD_STEPS = 60;
+/** the cold steps are compared with the warmed run's from every 10th step on, over at least 60 steps */
+const SETTLE_BLOCK = 10;
+const SETTLE_REST = 60;
+
+/**
+ * The cold start against the warmed run of the same scene, step for step (the same simulation, so
+ * the same work): the first step, the mean of the first 60, and how long until the cold steps stay
+ * within 10 % of the warmed ones (null if they never do within the cold run).
+ */
+function coldStart(cold: readonly number[], warm: readonly number[]): ColdStart {
+  const mean = (list: readonly number[], from: number, to: number) => {
+    let sum = 0;
+    for (let i = from; i < to; i++) sum += list[i];
+    return sum / (to - from);
+  };
+  // the first block from which the rest of the cold run takes within 10 % of the same steps warmed
+  // (a sum over the rest, so that one slow block of timer noise or a collection does not count as
+  // not settled); the rest is at least SETTLE_REST steps long
+  const length = Math.min(cold.length, warm.length);
+  let settled: number | null = null;
+  for (let from = 0; from + SETTLE_REST <= length; from += SETTLE_BLOCK) {
+    if (mean(cold, from, length) <= 1.1 * mean(warm, from, length)) {
+      settled = from;
+      break;
+    }
+  }
+  const n = Math.min(COLD_STEPS, cold.length);
+  return {
+    firstStepMs: cold[0],
+    first60Ms: mean(cold, 0, n),
+    warmFirst60Ms: mean(warm, 0, Math.min(n, warm.length)),
+    settledSteps: settled,
+    settledMs: settled === null ? null : cold.slice(0, settled).reduce((a, b) => a + b, 0),
+  };
+}
 
 function report(result: RunResult): never {
   process.stdout.write(`${RESULT_PREFIX}${JSON.stringify(result)}\n`);
@@ -76,6 +114,25 @@ async function main(): Promise<void> {
   base.settings = adapter.settings;
   clock.loaded = performance.now();
 
+  // the cold start: the engine's first steps ever in this process, on a throwaway copy of the scene,
+  // each timed; they also warm the JIT up for the timed run below
+  const coldMs: number[] = [];
+  let jitSteps = 0;
+  try {
+    adapter.build(builder(plan === QUICK));
+    const until = performance.now() + plan.jitMs;
+    while (jitSteps < COLD_STEPS || (jitSteps < plan.jitSteps && performance.now() < until)) {
+      const t0 = performance.now();
+      adapter.step(DT);
+      coldMs.push(performance.now() - t0);
+      jitSteps++;
+    }
+    adapter.dispose();
+  } catch (error) {
+    report({ ...base, stage: 'step', error: `cold start, after ${jitSteps} steps: ${message(error)}` });
+  }
+  clock.jitWarmed = performance.now();
+
   let fall: number;
   try {
     fall = checkFreeFall(adapter);
@@ -92,18 +149,6 @@ async function main(): Promise<void> {
   }
 
   clock.checked = performance.now();
-  let jitSteps = 0;
-  try {
-    adapter.build(builder(plan === QUICK));
-    const until = performance.now() + plan.jitMs;
-    while (jitSteps < plan.jitSteps && performance.now() < until) {
-      adapter.step(DT);
-      jitSteps++;
-    }
-    adapter.dispose();
-  } catch (error) {
-    report({ ...base, stage: 'step', error: `JIT warm-up, after ${jitSteps} steps: ${message(error)}` });
-  }
   base.jitWarmupSteps = jitSteps;
   clock.jitWarmed = performance.now();
   try {
@@ -128,14 +173,20 @@ async function main(): Promise<void> {
   const samples: number[] = [];
   let steps = 0;
   try {
-    for (; steps < plan.warmup; steps++) adapter.step(DT);
+    const warmMs: number[] = [];
+    const timedStep = (): void => {
+      const t0 = performance.now();
+      adapter.step(DT);
+      warmMs.push(performance.now() - t0);
+    };
+    for (; steps < plan.warmup; steps++) timedStep();
     sample();
     const settled = transforms.slice();
     const settledAt = steps * DT;
     const started = performance.now();
     for (let w = 0; w < plan.windows; w++) {
       const t0 = performance.now();
-      for (let i = 0; i < plan.window; i++) adapter.step(DT);
+      for (let i = 0; i < plan.window; i++) timedStep();
       samples.push((performance.now() - t0) / plan.window);
       steps += plan.window;
       sample();
@@ -149,11 +200,12 @@ async function main(): Promise<void> {
       windows: samples.length,
       windowMs: samples,
       msPerStep: summarize(samples),
+      coldStart: coldStart(coldMs, warmMs),
       setupMs: {
         load: clock.loaded - clock.start,
-        freeFall: clock.checked - clock.loaded,
-        jitWarmup: clock.jitWarmed - clock.checked,
-        build: clock.built - clock.jitWarmed,
+        jitWarmup: clock.jitWarmed - clock.loaded,
+        freeFall: clock.checked - clock.jitWarmed,
+        build: clock.built - clock.checked,
       },
       quality: {
         seconds: steps * DT,
