@@ -17,7 +17,7 @@ import {
   maxDisplacement,
   maxJointSeparation,
 } from './quality';
-import { type ColdStart, RESULT_PREFIX, type RunResult, summarize } from './result';
+import { COLD_STEPS, coldStart, RESULT_PREFIX, type RunResult, summarize } from './result';
 
 const DT = 1 / 60;
 /**
@@ -37,44 +37,6 @@ const FULL = { jitSteps: 600, jitMs: 1_000, warmup: 60, window: 60, windows: 9, 
  */
 const QUICK = { jitSteps: 300, jitMs: 400, warmup: 60, window: 10, windows: 3, budgetMs: 2_000 };
 const MIN_WINDOWS = 3;
-
-/** steps the cold run takes at least: the issue's "first 60 steps" */
-const COLD_STEPS = 60;
-/** the cold steps are compared with the warmed run's from every 10th step on, over at least 60 steps */
-const SETTLE_BLOCK = 10;
-const SETTLE_REST = 60;
-
-/**
- * The cold start against the warmed run of the same scene, step for step (the same simulation, so
- * the same work): the first step, the mean of the first 60, and how long until the cold steps stay
- * within 10 % of the warmed ones (null if they never do within the cold run).
- */
-function coldStart(cold: readonly number[], warm: readonly number[]): ColdStart {
-  const mean = (list: readonly number[], from: number, to: number) => {
-    let sum = 0;
-    for (let i = from; i < to; i++) sum += list[i];
-    return sum / (to - from);
-  };
-  // the first block from which the rest of the cold run takes within 10 % of the same steps warmed
-  // (a sum over the rest, so that one slow block of timer noise or a collection does not count as
-  // not settled); the rest is at least SETTLE_REST steps long
-  const length = Math.min(cold.length, warm.length);
-  let settled: number | null = null;
-  for (let from = 0; from + SETTLE_REST <= length; from += SETTLE_BLOCK) {
-    if (mean(cold, from, length) <= 1.1 * mean(warm, from, length)) {
-      settled = from;
-      break;
-    }
-  }
-  const n = Math.min(COLD_STEPS, cold.length);
-  return {
-    firstStepMs: cold[0],
-    first60Ms: mean(cold, 0, n),
-    warmFirst60Ms: mean(warm, 0, Math.min(n, warm.length)),
-    settledSteps: settled,
-    settledMs: settled === null ? null : cold.slice(0, settled).reduce((a, b) => a + b, 0),
-  };
-}
 
 function report(result: RunResult): never {
   process.stdout.write(`${RESULT_PREFIX}${JSON.stringify(result)}\n`);
