@@ -67,6 +67,7 @@ function createLink(engine: MatterEngine): FulcrumLink {
     joints: new Map(),
     list: [],
     bodies: new Map(),
+    state: new Float64Array(8),
     touching: new Map(),
   };
 }
@@ -144,7 +145,7 @@ export const Engine = {
       if (body.torque !== 0) sim.fulcrum.applyTorque(body.torque * ACCELERATION_TO_SI);
     }
     if (dt > 0) world.step(dt / 1000);
-    for (let i = 0; i < list.length; i++) if (!list[i].body.isStatic) readBack(list[i]);
+    for (let i = 0; i < list.length; i++) if (!list[i].body.isStatic) readBack(list[i], link.state);
     turnConstraintPoints(link);
 
     // the pairs active before this update and still active after it: built only when listened to

@@ -3,7 +3,7 @@ import type { World as FulcrumWorld } from '../api/world';
 import { Shape } from '../geometry/shapes';
 import type { Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
-import { makeRot } from '../math/rot';
+import { makeRot, rotAngle } from '../math/rot';
 import { type MatterBody, Stale, VELOCITY_TO_SI } from './body';
 import { Composite, type MatterComposite } from './composite';
 import type { MatterConstraint } from './constraint';
@@ -63,6 +63,8 @@ export interface FulcrumLink {
   /** the simulated bodies, in the order they joined the world */
   list: Simulated[];
   bodies: Map<MatterBody, Simulated>;
+  /** scratch for Body.readState */
+  state: Float64Array;
   /** how many shape pairs touch in each active matter pair (see collision-pairs.ts) */
   touching: Map<object, number>;
 }
@@ -94,8 +96,8 @@ type Rounded = { corners: MatterVector[]; radius: number };
 
 /**
  * A chamfered convex outline as the engine's exact shape in the body's frame (the frame its corners
- * were recorded in, when the body was made): the polygon of its arcs' centres rounded by the radius; a capsule where the arcs take whole sides (a pill), a circle where
- * they take all of them.
+ * were recorded in, when the body was made): the polygon of its arcs' centres rounded by the radius;
+ * a capsule where the arcs take whole sides (a pill), a circle where they take all of them.
  */
 function roundedShape({ corners, radius }: Rounded): Geometry {
   const points: MatterVector[] = [];
@@ -303,23 +305,25 @@ export function syncMembers(link: FulcrumLink, world: MatterComposite): void {
  * Writes the Fulcrum body's state into the matter body: pose, vertices, bounds (widened by the
  * velocity, as matter's), velocities, sleep. A body asleep since the last update has not moved.
  */
-export function readBack(sim: Simulated): void {
+export function readBack(sim: Simulated, state: Float64Array): void {
   const { body, fulcrum } = sim;
-  const awake = fulcrum.isAwake;
+  fulcrum.readState(state);
+  const awake = state[7] === 1;
   if (!awake && body.isSleeping) return;
-  const centre = fulcrum.worldCenter;
-  const { c, s } = fulcrum.rotation;
-  const v = fulcrum.linearVelocity;
-  const angle = fulcrum.angle;
+  const cx = state[0];
+  const cy = state[1];
+  const c = state[2];
+  const s = state[3];
+  const angle = rotAngle(c, s);
   const position = body.position;
   body.positionPrev.x = position.x;
   body.positionPrev.y = position.y;
   body.anglePrev = body.angle;
-  const vx = v.x / VELOCITY_TO_SI;
-  const vy = v.y / VELOCITY_TO_SI;
+  const vx = state[4] / VELOCITY_TO_SI;
+  const vy = state[5] / VELOCITY_TO_SI;
   body.velocity.x = vx;
   body.velocity.y = vy;
-  body.angularVelocity = fulcrum.angularVelocity / VELOCITY_TO_SI;
+  body.angularVelocity = state[6] / VELOCITY_TO_SI;
   body.speed = Math.sqrt(vx * vx + vy * vy);
   body.angularSpeed = Math.abs(body.angularVelocity);
   if (!awake !== body.isSleeping) {
@@ -338,8 +342,8 @@ export function readBack(sim: Simulated): void {
     let maxY = Number.NEGATIVE_INFINITY;
     for (let i = 0; i < outline.length; i++) {
       const p = outline[i];
-      const x = centre.x + c * p.x - s * p.y;
-      const y = centre.y + s * p.x + c * p.y;
+      const x = cx + c * p.x - s * p.y;
+      const y = cy + s * p.x + c * p.y;
       const vertex = vertices[i];
       vertex.x = x;
       vertex.y = y;
@@ -355,12 +359,12 @@ export function readBack(sim: Simulated): void {
     bounds.max.y = vy > 0 ? maxY + vy : maxY;
     if (part !== body) {
       const o = sim.offsets[k];
-      part.position.x = centre.x + c * o.x - s * o.y;
-      part.position.y = centre.y + s * o.x + c * o.y;
+      part.position.x = cx + c * o.x - s * o.y;
+      part.position.y = cy + s * o.x + c * o.y;
       part.angle += turned;
     }
   }
-  position.x = centre.x;
-  position.y = centre.y;
+  position.x = cx;
+  position.y = cy;
   body.angle = angle;
 }

@@ -1,6 +1,32 @@
 import { describe, expect, it } from 'vitest';
 import { Shape, World } from '../../src/index';
 
+describe('Body.readState', () => {
+  it('writes what the getters give, at an offset, and 0 for a sleeping body', () => {
+    const world = new World();
+    const ground = world.createBody();
+    ground.createShape(Shape.box(10, 0.5, { x: 0, y: -0.5 }));
+    const box = world.createBody({
+      type: 'dynamic',
+      position: { x: 1, y: 3 },
+      angle: 0.3,
+      angularVelocity: 2,
+    });
+    box.createShape(Shape.box(0.5, 0.25, { x: 0.1, y: 0 }));
+    world.step(1 / 60);
+    const out = new Float64Array(10);
+    box.readState(out, 2);
+    const { x, y } = box.worldCenter;
+    const { c, s } = box.rotation;
+    const v = box.linearVelocity;
+    expect([...out]).toEqual([0, 0, x, y, c, s, v.x, v.y, box.angularVelocity, 1]);
+    for (let i = 0; i < 600; i++) world.step(1 / 60);
+    expect(box.isAwake).toBe(false);
+    box.readState(out);
+    expect(out[7]).toBe(0);
+  });
+});
+
 describe('Body.getContacts', () => {
   it('a resting box: one contact of two points, normal from A to B, impulses that carry its weight (m g dt)', () => {
     const world = new World({ enableSleep: false });
