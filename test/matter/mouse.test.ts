@@ -23,6 +23,11 @@ function fakeCanvas() {
       for (const listener of listeners.get(type) ?? [])
         listener({ pageX: x, pageY: y, button: 0, preventDefault() {} });
     },
+    /** a touch event: the point in changedTouches, as a browser gives it */
+    touch(type: string, x: number, y: number) {
+      for (const listener of listeners.get(type) ?? [])
+        listener({ changedTouches: [{ pageX: x, pageY: y }], cancelable: true, preventDefault() {} });
+    },
   };
 }
 
@@ -97,6 +102,32 @@ describe('fulcrum/matter Mouse and MouseConstraint', () => {
       // hanging by a corner it would turn until its centre was under the pointer (about 0.95 rad)
       expect(Math.abs(box.angle), name).toBeLessThan(0.1);
       expect(Math.abs(box.position.x - 400), name).toBeLessThan(5);
+    }
+  });
+  it('a finger drags as the mouse does (touchstart, touchmove, touchend), as on matter.js', () => {
+    for (const [name, Matter] of [
+      ['matter-js', RealMatter as M],
+      ['fulcrum/matter', FulcrumMatter],
+    ] as const) {
+      const engine = Matter.Engine.create();
+      const ground = Matter.Bodies.rectangle(400, 590, 800, 20, { isStatic: true });
+      const box = Matter.Bodies.rectangle(400, 560, 40, 40);
+      const canvas = fakeCanvas();
+      const drag = Matter.MouseConstraint.create(engine, { mouse: Matter.Mouse.create(canvas as never) });
+      Matter.Composite.add(engine.world, [ground, box, drag as never]);
+      for (let i = 0; i < 30; i++) Matter.Engine.update(engine);
+      canvas.touch('touchstart', 400, 560);
+      Matter.Engine.update(engine);
+      for (let i = 1; i <= 20; i++) {
+        canvas.touch('touchmove', 400 + 10 * i, 560 - 10 * i);
+        Matter.Engine.update(engine);
+      }
+      for (let i = 0; i < 120; i++) Matter.Engine.update(engine);
+      expect(Math.abs(box.position.x - 600), name).toBeLessThan(5);
+      expect(Math.abs(box.position.y - 360), name).toBeLessThan(25);
+      canvas.touch('touchend', 600, 360);
+      for (let i = 0; i < 120; i++) Matter.Engine.update(engine);
+      expect(Math.abs(box.position.y - 560), name).toBeLessThan(2);
     }
   });
 });
