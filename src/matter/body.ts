@@ -166,6 +166,11 @@ export const Body = {
       : Common.choose(['#f19648', '#f5d259', '#f55a3c', '#063e7b', '#ececd1']);
     body.render.strokeStyle ??= body.isStatic ? '#555' : '#ccc';
     body.render.lineWidth ??= 0;
+    // a sprite is drawn about the body's position: its offset is where that lies within the bounds
+    const { min, max } = body.bounds;
+    const sprite = body.render.sprite as { xOffset: number; yOffset: number };
+    sprite.xOffset += -(min.x - body.position.x) / (max.x - min.x);
+    sprite.yOffset += -(min.y - body.position.y) / (max.y - min.y);
     return body;
   },
 

@@ -77,4 +77,48 @@ describe('fulcrum/matter Render', () => {
     expect(ty).toBeCloseTo(-b.min.y * sy, 9);
     expect(transforms[2]).toEqual([1, 0, 0, 1, 0, 0]);
   });
+  it("draws a sprite body's texture at its position and angle, scaled by xScale and yScale about its offset", () => {
+    const page = globalThis as unknown as Record<string, unknown>;
+    page.Image = class {
+      width = 64;
+      height = 32;
+      src = '';
+    };
+    try {
+      const { canvas, context } = recordingCanvas();
+      const calls: unknown[][] = [];
+      Object.assign(context, {
+        translate: (...args: number[]) => calls.push(['translate', ...args]),
+        rotate: (...args: number[]) => calls.push(['rotate', ...args]),
+        drawImage: (image: { src: string }, ...args: number[]) =>
+          calls.push(['drawImage', image.src, ...args]),
+      });
+      const engine = Matter.Engine.create();
+      const crate = Matter.Bodies.rectangle(200, 100, 128, 16, {
+        angle: 0.25,
+        render: { sprite: { texture: 'crate.png', xScale: 2, yScale: 0.5 } },
+      });
+      Matter.Composite.add(engine.world, crate);
+      // sprites are drawn when wireframes are off (matter's default is on)
+      const render = Matter.Render.create({
+        engine,
+        canvas: canvas as never,
+        options: { wireframes: false } as never,
+      });
+      Matter.Render.world(render);
+      // the image (64 by 32) drawn 128 by 16, centred on the body (offsets 0.5), turned with it
+      const rounded = calls.map((call) =>
+        call.map((v) => (typeof v === 'number' ? Math.round(v * 1e9) / 1e9 : v)),
+      );
+      expect(rounded).toEqual([
+        ['translate', 200, 100],
+        ['rotate', 0.25],
+        ['drawImage', 'crate.png', -64, -8, 128, 16],
+        ['rotate', -0.25],
+        ['translate', -200, -100],
+      ]);
+    } finally {
+      delete page.Image;
+    }
+  });
 });
