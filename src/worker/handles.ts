@@ -15,19 +15,9 @@ import type { JointType } from '../joints/registry';
 import { makeRot, rotAngle } from '../math/rot';
 import type { Transform, Vec2 } from '../math/vec2';
 import { checkKindChange } from '../world/world-edits';
+import { toPlain } from './plain';
 import { type BodyCommand, type Plain, type PlainDef, Row } from './protocol';
 import type { WorkerWorld } from './worker-world';
-
-/** A checked definition or argument as plain data: own keys, nested objects copied, userData left out. */
-export function toPlain(value: unknown): Plain {
-  if (typeof value !== 'object' || value === null) return value as Plain;
-  if (Array.isArray(value)) return value.map(toPlain);
-  const out: PlainDef = {};
-  for (const key of Object.keys(value)) {
-    if (key !== 'userData') out[key] = toPlain((value as Record<string, unknown>)[key]);
-  }
-  return out;
-}
 
 /**
  * A body of a WorkerWorld, made at once on the calling thread while the worker makes the body itself

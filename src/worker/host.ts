@@ -7,6 +7,7 @@ import type { Joint } from '../joints/joint';
 import type { JointDef } from '../joints/registry';
 import type { CastHit } from '../query/index';
 import { BodyFlag, BodyState } from '../store/body-store';
+import { deepFreeze } from './plain';
 import {
   type Batch,
   type Command,
@@ -18,15 +19,6 @@ import {
   type RestoredHandles,
   Row,
 } from './protocol';
-
-/** Freezes a structured clone of `Shape.*` geometry as deep as Shape froze the original. */
-function deepFreeze<T>(value: T): T {
-  if (typeof value === 'object' && value !== null && !Object.isFrozen(value)) {
-    for (const key of Object.keys(value)) deepFreeze((value as Record<string, unknown>)[key]);
-    Object.freeze(value);
-  }
-  return value;
-}
 
 function isShared(buffer: ArrayBufferLike): boolean {
   return typeof SharedArrayBuffer === 'function' && buffer instanceof SharedArrayBuffer;

@@ -28,7 +28,7 @@ export type BodyCommand = (typeof BODY_COMMANDS)[number];
 
 /**
  * A plain value: what a checked definition or argument holds once its handles are ids and its
- * objects plain copies (structured-cloneable; see toPlain).
+ * objects plain copies (structured-cloneable; see plain.ts).
  */
 export type Plain = unknown;
 

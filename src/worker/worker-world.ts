@@ -12,7 +12,8 @@ import type { AABB } from '../math/aabb';
 import type { Vec2 } from '../math/vec2';
 import type { QueryFilter, QueryTransform } from '../query/index';
 import { decodeEvents, type WorkerWorldEventMap } from './events';
-import { toPlain, WorkerBody, WorkerJoint, WorkerShape } from './handles';
+import { WorkerBody, WorkerJoint, WorkerShape } from './handles';
+import { deepFreeze, toPlain } from './plain';
 import { type PortListener, startWorker, type WorkerPort } from './platform';
 import {
   type Command,
@@ -113,15 +114,6 @@ function fullBodyDef(d: ResolvedBodyDef): PlainDef {
     allowSleep: d.allowSleep,
     awake: d.awake,
   };
-}
-
-/** Freezes a structured clone of `Shape.*` geometry as deep as Shape froze the original. */
-function deepFreeze<T>(value: T): T {
-  if (typeof value === 'object' && value !== null && !Object.isFrozen(value)) {
-    for (const key of Object.keys(value)) deepFreeze((value as Record<string, unknown>)[key]);
-    Object.freeze(value);
-  }
-  return value;
 }
 
 /**
