@@ -88,6 +88,52 @@ export const BODY_KINDS = {
   dynamic: BodyKind.DYNAMIC,
 } as const;
 
+/** @internal A body definition checked, with every default filled in (World.createBody). */
+export interface ResolvedBodyDef {
+  type: BodyType;
+  position: Vec2;
+  angle: number;
+  v: Vec2;
+  w: number;
+  linearDamping: number;
+  angularDamping: number;
+  gravityScale: number;
+  fixedRotation: boolean;
+  bullet: boolean;
+  allowSleep: boolean;
+  awake: boolean;
+}
+
+/**
+ * @internal Checks a body definition completely (World.createBody, and fulcrum/worker on the calling
+ * thread) and fills in its defaults; throws FulcrumError naming the option.
+ */
+export function resolveBodyDef(def: BodyDef): ResolvedBodyDef {
+  if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
+  checkKnownKeys('def', def, BODY_DEF_KEYS);
+  const type = def.type === undefined ? 'static' : def.type;
+  if (!BODY_TYPES.includes(type)) fail('type', type, "'static', 'kinematic' or 'dynamic'");
+  return {
+    type,
+    position: def.position === undefined ? { x: 0, y: 0 } : checkCoordinates('position', def.position),
+    angle: def.angle === undefined ? 0 : checkAngle('angle', def.angle),
+    v:
+      def.linearVelocity === undefined
+        ? { x: 0, y: 0 }
+        : checkVector('linearVelocity', def.linearVelocity, Limits.RATE),
+    w: def.angularVelocity === undefined ? 0 : checkRate('angularVelocity', def.angularVelocity),
+    linearDamping:
+      def.linearDamping === undefined ? 0 : checkNonNegativeRate('linearDamping', def.linearDamping),
+    angularDamping:
+      def.angularDamping === undefined ? 0 : checkNonNegativeRate('angularDamping', def.angularDamping),
+    gravityScale: def.gravityScale === undefined ? 1 : checkRate('gravityScale', def.gravityScale),
+    fixedRotation: def.fixedRotation === undefined ? false : checkBoolean('fixedRotation', def.fixedRotation),
+    bullet: def.bullet === undefined ? false : checkBoolean('bullet', def.bullet),
+    allowSleep: def.allowSleep === undefined ? true : checkBoolean('allowSleep', def.allowSleep),
+    awake: def.awake === undefined ? true : checkBoolean('awake', def.awake),
+  };
+}
+
 /** A scale factor: finite, not 0, at most Limits.COORDINATE in size (a negative one mirrors). */
 function checkScaleFactor(argument: string, value: unknown, given: unknown): number {
   if (

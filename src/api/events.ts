@@ -93,7 +93,8 @@ export interface WorldEvents {
   warning: WarningEvent[];
 }
 
-const EVENT_NAMES = [
+/** @internal Every event World.on takes, in the order its error lists them. */
+export const EVENT_NAMES = [
   'contactBegin',
   'contactEnd',
   'contactHit',

@@ -331,6 +331,33 @@ export function checkGeometryFor(
 const MAKERS = 'Shape.circle/box/polygon/capsule/segment/concave/chain';
 
 /**
+ * @internal What Body.createShape checks before it changes anything, for a body of kind `kind` in a
+ * world holding `shapeCount` shapes: the geometries to attach (a concave shape's pieces or a chain's
+ * segments, or the one geometry) and the definition with its defaults. fulcrum/worker checks a call
+ * with it on the calling thread.
+ */
+export function checkShapes(
+  kind: BodyKind,
+  geometry: unknown,
+  def: ShapeDef | undefined,
+  shapeCount: number,
+): { parts: readonly Geometry[] | null; geometry: Geometry | null; def: ResolvedShapeDef } {
+  const parts = isConcave(geometry) ? geometry.pieces : isChain(geometry) ? geometry.segments : null;
+  if (parts !== null) {
+    if (isChain(geometry) && kind === BodyKind.DYNAMIC) {
+      throw new FulcrumError('geometry: a chain can only be attached to a static or kinematic body');
+    }
+    const d = resolveShapeDef(def);
+    checkRoom('shapes', shapeCount + parts.length - 1);
+    return { parts, geometry: null, def: d };
+  }
+  checkGeometryFor(kind, geometry, MAKERS);
+  const d = resolveShapeDef(def);
+  checkRoom('shapes', shapeCount);
+  return { parts: null, geometry, def: d };
+}
+
+/**
  * @internal Body.createShape: validates everything, then adds the shape (or a concave shape's pieces,
  * in order) to the body's list and the broad phase.
  */
@@ -342,22 +369,15 @@ export function attachShapes(
 ): ShapeHandle | ShapeHandle[] {
   const b = body.check();
   const core = handles.core;
-  const parts = isConcave(geometry) ? geometry.pieces : isChain(geometry) ? geometry.segments : null;
-  if (parts !== null) {
-    if (isChain(geometry) && core.bodies.kind[b] === BodyKind.DYNAMIC) {
-      throw new FulcrumError('geometry: a chain can only be attached to a static or kinematic body');
-    }
-    const d = resolveShapeDef(def);
-    checkRoom('shapes', core.shapes.liveCount + parts.length - 1);
-    const shapes = parts.map((part) => addShape(handles, body, b, part, d));
+  const checked = checkShapes(core.bodies.kind[b], geometry, def, core.shapes.liveCount);
+  const d = checked.def;
+  if (checked.parts !== null) {
+    const shapes = checked.parts.map((part) => addShape(handles, body, b, part, d));
     core.updateMass(b);
     core.wake(b);
     return shapes;
   }
-  checkGeometryFor(core.bodies.kind[b], geometry, MAKERS);
-  const d = resolveShapeDef(def);
-  checkRoom('shapes', core.shapes.liveCount);
-  const shape = addShape(handles, body, b, geometry, d);
+  const shape = addShape(handles, body, b, checked.geometry!, d);
   core.updateMass(b);
   core.wake(b);
   return shape;

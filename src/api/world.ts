@@ -7,16 +7,7 @@ import {
   fail,
 } from '../core/errors';
 import { checkRoom, IndexBound } from '../core/index-bound';
-import {
-  checkAngle,
-  checkCoordinates,
-  checkNonNegativeRate,
-  checkRange,
-  checkRate,
-  checkVector,
-  checkZeroOrRange,
-  Limits,
-} from '../core/limits';
+import { checkRange, checkVector, checkZeroOrRange, Limits } from '../core/limits';
 import type { Geometry } from '../geometry/types';
 import { buildJoint } from '../joints/create-joint';
 import { Joint } from '../joints/joint';
@@ -30,7 +21,7 @@ import { BodyFlag, BodyKind, BodyState } from '../store/body-store';
 import { stepWorld } from '../world/step';
 import { WorldCore } from '../world/world-core';
 import { sleepIsland } from '../world/world-edits';
-import { BODY_DEF_KEYS, BODY_KINDS, BODY_TYPES, Body, type BodyDef } from './body';
+import { BODY_KINDS, Body, type BodyDef, resolveBodyDef } from './body';
 import type { WorldEventMap, WorldEvents } from './events';
 import { WorldHandles } from './handles';
 import type { ShapeHandle } from './shape';
@@ -214,27 +205,20 @@ export class World {
   createBody(def: BodyDef = {}): Body {
     this.checkUnlocked();
     checkRoom('bodies', this.core.bodies.liveCount);
-    if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
-    checkKnownKeys('def', def, BODY_DEF_KEYS);
-    const type = def.type === undefined ? 'static' : def.type;
-    if (!BODY_TYPES.includes(type)) fail('type', type, "'static', 'kinematic' or 'dynamic'");
-    const position = def.position === undefined ? { x: 0, y: 0 } : checkCoordinates('position', def.position);
-    const angle = def.angle === undefined ? 0 : checkAngle('angle', def.angle);
-    const v =
-      def.linearVelocity === undefined
-        ? { x: 0, y: 0 }
-        : checkVector('linearVelocity', def.linearVelocity, Limits.RATE);
-    const w = def.angularVelocity === undefined ? 0 : checkRate('angularVelocity', def.angularVelocity);
-    const linearDamping =
-      def.linearDamping === undefined ? 0 : checkNonNegativeRate('linearDamping', def.linearDamping);
-    const angularDamping =
-      def.angularDamping === undefined ? 0 : checkNonNegativeRate('angularDamping', def.angularDamping);
-    const gravityScale = def.gravityScale === undefined ? 1 : checkRate('gravityScale', def.gravityScale);
-    const fixedRotation =
-      def.fixedRotation === undefined ? false : checkBoolean('fixedRotation', def.fixedRotation);
-    const bullet = def.bullet === undefined ? false : checkBoolean('bullet', def.bullet);
-    const allowSleep = def.allowSleep === undefined ? true : checkBoolean('allowSleep', def.allowSleep);
-    const awake = def.awake === undefined ? true : checkBoolean('awake', def.awake);
+    const {
+      type,
+      position,
+      angle,
+      v,
+      w,
+      linearDamping,
+      angularDamping,
+      gravityScale,
+      fixedRotation,
+      bullet,
+      allowSleep,
+      awake,
+    } = resolveBodyDef(def);
 
     const core = this.core;
     const bodies = core.bodies;

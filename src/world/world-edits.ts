@@ -10,6 +10,18 @@ import type { WorldCore } from './world-core';
  */
 
 /**
+ * Throws unless a body may take kind `kind` (named `type`) given whether it holds a segment shape:
+ * a dynamic body cannot. changeBodyKind checks with it, and fulcrum/worker on the calling thread.
+ */
+export function checkKindChange(kind: BodyKind, hasSegment: boolean, type: string): void {
+  if (kind === BodyKind.DYNAMIC && hasSegment) {
+    throw new FulcrumError(
+      `type: a body with a segment shape cannot be 'dynamic', got ${JSON.stringify(type)}`,
+    );
+  }
+}
+
+/**
  * Gives body `b` the kind `kind` (`type` is the name the caller gave, for the error): its contacts and
  * proxies are made anew, as a body of another kind has other pairs and lives in another tree.
  */
@@ -18,13 +30,11 @@ export function changeBodyKind(core: WorldCore, b: number, kind: BodyKind, type:
   if (bodies.kind[b] === kind) return;
   const shapes = core.shapes;
   if (kind === BodyKind.DYNAMIC) {
+    let segment = false;
     for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-      if (shapes.kind[s] === ShapeKind.SEGMENT) {
-        throw new FulcrumError(
-          `type: a body with a segment shape cannot be 'dynamic', got ${JSON.stringify(type)}`,
-        );
-      }
+      if (shapes.kind[s] === ShapeKind.SEGMENT) segment = true;
     }
+    checkKindChange(kind, segment, type);
   }
   core.wakeTouching(b);
   core.islands.remove(bodies, b);
