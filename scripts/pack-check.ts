@@ -94,6 +94,32 @@ const helloMatter = `function helloMatter(Matter) {
   return 'fulcrum/matter: fell ' + fallen.toFixed(1) + ' px in 0.5 s (free fall 125), rests at y = ' + box.position.y.toFixed(2);
 }`;
 
+/** fulcrum/worker: a world stepped in a worker gives the same state, bit for bit, as the same calls on a World. */
+const helloWorker = `async function helloWorker(fulcrum, WorkerWorld) {
+  const build = (world) => {
+    const ground = world.createBody();
+    ground.createShape(fulcrum.Shape.box(5, 0.5), {});
+    const ball = world.createBody({ type: 'dynamic', position: { x: 0.3, y: 3 } });
+    ball.createShape(fulcrum.Shape.circle(0.5), { restitution: 0.5 });
+    return ball;
+  };
+  const local = new fulcrum.World();
+  const remote = await WorkerWorld.create();
+  try {
+    const ball = build(remote);
+    build(local);
+    for (let i = 0; i < 90; i++) {
+      local.step(1 / 60);
+      await remote.step(1 / 60);
+    }
+    const hash = await remote.stateHash();
+    if (hash !== fulcrum.stateHash(local)) throw new Error('hello worker: the worker world hash ' + hash + ' differs from the World on this thread, ' + fulcrum.stateHash(local));
+    return 'fulcrum/worker (' + remote.bufferMode + ' buffers): 90 steps in a worker, the same state hash as on this thread; the ball at y = ' + ball.position.y.toFixed(4) + ' m';
+  } finally {
+    remote.terminate();
+  }
+}`;
+
 const typedMatter = `import Matter, { Bodies, Composite, Engine } from 'fulcrum/matter';
 const engine = Engine.create();
 const box = Bodies.rectangle(0, 0, 40, 40);
@@ -287,14 +313,14 @@ async function main() {
   step('ESM (hello.mjs)');
   fs.writeFileSync(
     path.join(app, 'hello.mjs'),
-    `import * as fulcrum from 'fulcrum';\nimport * as render from 'fulcrum/render';\nimport Matter from 'fulcrum/matter';\n${helloWorld}\n${renderInNode}\n${helloMatter}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\nconsole.log(helloMatter(Matter));\n`,
+    `import * as fulcrum from 'fulcrum';\nimport * as render from 'fulcrum/render';\nimport Matter from 'fulcrum/matter';\nimport { WorkerWorld } from 'fulcrum/worker';\n${helloWorld}\n${renderInNode}\n${helloMatter}\n${helloWorker}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\nconsole.log(helloMatter(Matter));\nconsole.log(await helloWorker(fulcrum, WorkerWorld));\n`,
   );
   console.log(run('node', ['hello.mjs'], app).trim());
 
   step('CommonJS (hello.cjs)');
   fs.writeFileSync(
     path.join(app, 'hello.cjs'),
-    `const fulcrum = require('fulcrum');\nconst render = require('fulcrum/render');\nconst Matter = require('fulcrum/matter');\n${helloWorld}\n${renderInNode}\n${helloMatter}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\nconsole.log(helloMatter(Matter));\n`,
+    `const fulcrum = require('fulcrum');\nconst render = require('fulcrum/render');\nconst Matter = require('fulcrum/matter');\nconst { WorkerWorld } = require('fulcrum/worker');\n${helloWorld}\n${renderInNode}\n${helloMatter}\n${helloWorker}\nconsole.log(helloWorld(fulcrum));\nconsole.log(renderInNode(fulcrum, render));\nconsole.log(helloMatter(Matter));\nhelloWorker(fulcrum, WorkerWorld).then(console.log, (e) => { console.error(e); process.exitCode = 1; });\n`,
   );
   console.log(run('node', ['hello.cjs'], app).trim());
 
