@@ -10,6 +10,10 @@ export default defineConfig({
         find: /^fulcrum\/render$/,
         replacement: fileURLToPath(new URL('./src/render/index.ts', import.meta.url)),
       },
+      {
+        find: /^fulcrum\/worker$/,
+        replacement: fileURLToPath(new URL('./src/worker/index.ts', import.meta.url)),
+      },
     ],
   },
   test: {

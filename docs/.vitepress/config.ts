@@ -37,6 +37,7 @@ const guide: DefaultTheme.SidebarItem[] = [
       { text: 'Continuous collision', link: '/guide/continuous-collision' },
       { text: 'Determinism and snapshots', link: '/guide/determinism' },
       { text: 'Performance tips', link: '/guide/performance' },
+      { text: 'Workers', link: '/guide/workers' },
       { text: 'Rendering', link: '/guide/rendering' },
     ],
   },

@@ -24,6 +24,18 @@ afterAll(() => {
 const G = 10;
 
 describe('docs examples', () => {
+  it('worker: a world in a worker drops its ball as a World on this thread does, bit for bit', async () => {
+    const { dropInAWorker } = await import('../../docs/examples/worker');
+    const { workerScript } = await import('../helpers/worker-script');
+    const result = await dropInAWorker({ url: workerScript() });
+    expect(result.same).toBe(true);
+    expect(result.y).toBe(result.twinY);
+    // restitution 0.5 from 4 m up: it bounces, and after 2 s it is back near the ground (y = 1)
+    expect(result.bounces).toBeGreaterThan(0);
+    expect(result.y).toBeGreaterThan(0.99);
+    expect(result.y).toBeLessThan(2.5);
+  });
+
   it('hello world: the ball comes to rest on the ground, half a metre up', async () => {
     const { ball, touches } = await import('../../docs/examples/hello-world');
     expect(ball.position.x).toBe(0);
