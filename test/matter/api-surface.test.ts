@@ -1,14 +1,6 @@
-import { createRequire } from 'node:module';
 import { describe, expect, it } from 'vitest';
 import FulcrumMatter from '../../src/matter/index';
-
-// calls that matter.js's own example programs make, each checked against matter-js itself
-const RealMatter = createRequire(import.meta.url)('matter-js');
-type M = typeof FulcrumMatter;
-const both: [string, M][] = [
-  ['matter-js', RealMatter as M],
-  ['fulcrum/matter', FulcrumMatter],
-];
+import { both } from '../helpers/matter-both';
 
 describe('fulcrum/matter has the calls matter programs make', () => {
   it('engine.world.gravity is engine.gravity (matter 0.20 keeps the old name)', () => {

@@ -1,18 +1,5 @@
-import { createRequire } from 'node:module';
 import { describe, expect, it } from 'vitest';
-import FulcrumMatter from '../../src/matter/index';
-
-// the same matter.js program, run on real matter.js and on the layer
-const RealMatter = createRequire(import.meta.url)('matter-js');
-type M = typeof FulcrumMatter;
-const both: [string, M][] = [
-  ['matter-js', RealMatter as M],
-  ['fulcrum/matter', FulcrumMatter],
-];
-
-function run(Matter: M, engine: ReturnType<M['Engine']['create']>, updates: number) {
-  for (let i = 0; i < updates; i++) Matter.Engine.update(engine, 1000 / 60);
-}
+import { both, run } from '../helpers/matter-both';
 
 describe('fulcrum/matter behaves as matter.js', () => {
   it('a ball of restitution 0.8 dropped 300 px bounces back 0.8^2 of the way, as on matter.js', () => {

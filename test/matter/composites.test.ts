@@ -1,13 +1,6 @@
-import { createRequire } from 'node:module';
 import { describe, expect, it } from 'vitest';
 import FulcrumMatter from '../../src/matter/index';
-
-const RealMatter = createRequire(import.meta.url)('matter-js');
-type M = typeof FulcrumMatter;
-const both: [string, M][] = [
-  ['matter-js', RealMatter as M],
-  ['fulcrum/matter', FulcrumMatter],
-];
+import { both, type M } from '../helpers/matter-both';
 
 type Point = { x: number; y: number };
 const positions = (bodies: { position: Point }[]) => bodies.map((b) => [b.position.x, b.position.y]);

@@ -1,14 +1,5 @@
-import { createRequire } from 'node:module';
 import { describe, expect, it } from 'vitest';
-import FulcrumMatter from '../../src/matter/index';
-
-// the same matter.js program, run on real matter.js and on the layer
-const RealMatter = createRequire(import.meta.url)('matter-js');
-type M = typeof FulcrumMatter;
-const both: [string, M][] = [
-  ['matter-js', RealMatter as M],
-  ['fulcrum/matter', FulcrumMatter],
-];
+import { both } from '../helpers/matter-both';
 
 describe('fulcrum/matter constraints as matter programs use them', () => {
   it("a slingshot's elastic (soft, to a world point, length 0) flings the ball past the anchor as far as on matter.js", () => {

@@ -1,18 +1,6 @@
-import { createRequire } from 'node:module';
 import { describe, expect, it } from 'vitest';
 import FulcrumMatter from '../../src/matter/index';
-
-// the same matter.js program, run on real matter.js and on the layer
-const RealMatter = createRequire(import.meta.url)('matter-js');
-type M = typeof FulcrumMatter;
-const both: [string, M][] = [
-  ['matter-js', RealMatter as M],
-  ['fulcrum/matter', FulcrumMatter],
-];
-
-function run(Matter: M, engine: ReturnType<M['Engine']['create']>, updates: number) {
-  for (let i = 0; i < updates; i++) Matter.Engine.update(engine, 1000 / 60);
-}
+import { both, run } from '../helpers/matter-both';
 
 describe("fulcrum/matter keeps matter's masses", () => {
   it('a torque turns a body as much as on matter.js (matter gives every body 4 times its inertia)', () => {

@@ -1,9 +1,6 @@
-import { createRequire } from 'node:module';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import FulcrumMatter from '../../src/matter/index';
-
-const RealMatter = createRequire(import.meta.url)('matter-js');
-type M = typeof FulcrumMatter;
+import { type M, RealMatter } from '../helpers/matter-both';
 
 /** A stand-in for a canvas of 800 by 600 at the page's origin: it keeps the listeners it is given. */
 function fakeCanvas() {

@@ -1,8 +1,6 @@
-import { createRequire } from 'node:module';
 import { describe, expect, it } from 'vitest';
 import Matter from '../../src/matter/index';
-
-const RealMatter = createRequire(import.meta.url)('matter-js');
+import { RealMatter } from '../helpers/matter-both';
 
 describe('fulcrum/matter Plugin, Matter.use, Matter.after, Svg and Detector', () => {
   it('a wrap-around plugin (as matter-wrap is written) installs once and hooks Engine.update by path', () => {

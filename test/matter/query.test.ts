@@ -1,10 +1,7 @@
-import { createRequire } from 'node:module';
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import FulcrumMatter from '../../src/matter/index';
-
-const RealMatter = createRequire(import.meta.url)('matter-js');
-type M = typeof FulcrumMatter;
+import { type M, RealMatter } from '../helpers/matter-both';
 
 /** The same bodies in both libraries: a row of boxes, circles, polygons and a turned box. */
 function scene(Matter: M) {

@@ -1,9 +1,6 @@
-import { createRequire } from 'node:module';
 import { describe, expect, it } from 'vitest';
 import FulcrumMatter from '../../src/matter/index';
-
-const RealMatter = createRequire(import.meta.url)('matter-js');
-type M = typeof FulcrumMatter;
+import { type M, RealMatter } from '../helpers/matter-both';
 
 /** Updates per tick when frames come every `frame` ms for `seconds`, by `Runner.tick` driven by hand. */
 function updatesPerTick(Matter: M, frame: number, seconds: number, options = {}): number[] {
