@@ -1,5 +1,6 @@
 import type { Body as FulcrumBody } from '../api/body';
 import type { World as FulcrumWorld } from '../api/world';
+import { Limits } from '../core/limits';
 import { Shape } from '../geometry/shapes';
 import type { Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
@@ -155,19 +156,19 @@ function buildShapes(sim: Simulated): void {
       },
       userData: part,
     };
+    const density = densityOf(part);
     if (part.circleRadius > 0) {
       // a true circle
-      const density = part.mass / (Math.PI * part.circleRadius * part.circleRadius);
       fulcrum.createShape(Shape.circle(part.circleRadius, toLocal(part.position, origin, c, s)), {
         ...def,
         density,
       });
     } else if (part._rounded && body.parts.length === 1) {
-      fulcrum.createShape(roundedShape(part._rounded), { ...def, density: part.density });
+      fulcrum.createShape(roundedShape(part._rounded), { ...def, density });
     } else {
       const outline = part.vertices.map((p) => toLocal(p, origin, c, s));
-      if (outline.length <= 8) fulcrum.createShape(Shape.polygon(outline), { ...def, density: part.density });
-      else fulcrum.createShape(Shape.concave(outline), { ...def, density: part.density });
+      if (outline.length <= 8) fulcrum.createShape(Shape.polygon(outline), { ...def, density });
+      else fulcrum.createShape(Shape.concave(outline), { ...def, density });
     }
   }
   sim.surfaces = body.parts.map(surfaceOf);
@@ -175,6 +176,17 @@ function buildShapes(sim: Simulated): void {
   sim.offsets = body.parts.map((part) => toLocal(part.position, origin, c, s));
   applyMass(sim);
   body._stale = Stale.NO;
+}
+
+/**
+ * A part's density for its Fulcrum shapes (mass over area; a circle weighs the polygon matter draws),
+ * held to the engine's range: the body's mass is matter's anyway (applyMass), this only places it.
+ */
+function densityOf(part: MatterBody): number {
+  const density = part.mass / part.area;
+  return density > 0
+    ? Math.min(Math.max(density, Limits.MIN_DENSITY), Limits.MAX_DENSITY)
+    : Limits.MIN_DENSITY;
 }
 
 function surfaceOf(part: MatterBody): SurfaceFields {
@@ -190,13 +202,20 @@ function surfaceOf(part: MatterBody): SurfaceFields {
   };
 }
 
-/** matter's mass and inertia on the Fulcrum body, about the matter body's position. */
+/**
+ * matter's mass and inertia on the Fulcrum body, about the matter body's position (held to the
+ * engine's accepted ranges: matter takes any number a program sets; a massless body keeps its shapes').
+ */
 function applyMass({ body, fulcrum }: Simulated): void {
   const fixed = body.inertia === Number.POSITIVE_INFINITY;
   fulcrum.setFixedRotation(fixed);
-  if (!(body.mass > 0 && body.mass < Number.POSITIVE_INFINITY)) return;
+  if (!(body.mass > 0)) return;
   const inertia = fixed || !(body.inertia > 0) ? fulcrum.inertia || 1 : body.inertia;
-  fulcrum.setMassData({ mass: body.mass, inertia, center: { x: 0, y: 0 } });
+  fulcrum.setMassData({
+    mass: Math.min(Math.max(body.mass, Limits.MIN_MASS), Limits.MAX_MASS),
+    inertia: Math.min(Math.max(inertia, Limits.MIN_INERTIA), Limits.MAX_INERTIA),
+    center: { x: 0, y: 0 },
+  });
 }
 
 /** The Fulcrum body of matter body `body`, at its position and angle, with its velocities and damping. */

@@ -46,6 +46,22 @@ describe("fulcrum/matter keeps matter's masses", () => {
     }
   });
 
+  it('a mass far beyond what shapes reach (Body.setMass 1e40, or 0) keeps the update running, as matter does', () => {
+    const Matter = FulcrumMatter;
+    const engine = Matter.Engine.create();
+    const heavy = Matter.Bodies.rectangle(100, 0, 40, 40);
+    const weightless = Matter.Bodies.rectangle(300, 0, 40, 40);
+    Matter.Composite.add(engine.world, [heavy, weightless]);
+    Matter.Body.setMass(heavy, 1e40);
+    Matter.Body.setMass(weightless, 0);
+    run(Matter, engine, 30);
+    // both fall as gravity says, whatever their mass: 125 px in half a second, less frictionAir
+    for (const body of [heavy, weightless]) {
+      expect(Number.isFinite(body.position.y)).toBe(true);
+      expect(body.position.y).toBeGreaterThan(100);
+    }
+  });
+
   it('Body.scale on a body in the world: the new size stays and rests on the ground at its new height', () => {
     for (const [name, Matter] of both) {
       const engine = Matter.Engine.create();
