@@ -79,6 +79,11 @@ function dampingOf(frictionAir: number): number {
   return 4 * VELOCITY_TO_SI * (1 / Math.sqrt(Math.sqrt(kept)) - 1);
 }
 
+/** A friction or restitution as the engine takes it: a negative one or NaN is 0 (matter would not check it). */
+function coefficient(value: number): number {
+  return value > 0 ? Math.min(value, Limits.RATE) : 0;
+}
+
 /**
  * matter's friction as a Coulomb coefficient. matter takes a fixed amount of speed off a sliding body
  * each update, about 2.5 times its `friction` in px per update per update, whatever the load: under
@@ -90,7 +95,7 @@ function dampingOf(frictionAir: number): number {
 const FRICTION_SCALE = 9;
 
 function frictionOf(part: MatterBody): number {
-  return FRICTION_SCALE * part.friction;
+  return coefficient(FRICTION_SCALE * part.friction);
 }
 
 type Rounded = { corners: MatterVector[]; radius: number };
@@ -147,7 +152,7 @@ function buildShapes(sim: Simulated): void {
   for (const part of parts) {
     const def = {
       friction: frictionOf(part),
-      restitution: part.restitution,
+      restitution: coefficient(part.restitution),
       isSensor: part.isSensor,
       filter: {
         categoryBits: part.collisionFilter.category >>> 0,
@@ -287,7 +292,7 @@ export function refresh(sim: Simulated): void {
     for (const shape of fulcrum.shapes) {
       if (shape.userData !== part) continue;
       shape.friction = frictionOf(part);
-      shape.restitution = part.restitution;
+      shape.restitution = coefficient(part.restitution);
       shape.isSensor = part.isSensor;
       shape.filter = {
         categoryBits: filter.category >>> 0,
