@@ -8,6 +8,7 @@ export type Request =
   | { kind: 'attach'; room: string; packed: PackedRoom }
   /** takes the room out of the worker at a step boundary and answers it packed */
   | { kind: 'detach'; room: string }
+  | { kind: 'remove'; room: string }
   | { kind: 'command'; room: string; command: RoomCommand }
   | { kind: 'hash'; room: string }
   | { kind: 'snapshot'; room: string }
@@ -27,6 +28,8 @@ export interface RoomStats {
 export interface WorkerStats {
   /** the worker's rooms, in the order it steps them */
   rooms: RoomStats[];
+  /** time of a room step, ms, over every room of the worker */
+  step: Percentiles;
   /** time of a tick, ms: every room of the worker stepped once */
   tick: Percentiles;
   /** ticks run on the clock */

@@ -137,6 +137,14 @@ export class RoomPool extends EventEmitter<{ failure: [WorkerFailure] }> {
     }
   }
 
+  /** Ends a room (after any move of it in progress). */
+  async removeRoom(room: string): Promise<void> {
+    await this.#after(room, async () => {
+      await this.#workers[this.workerOf(room)].request({ kind: 'remove', room });
+      this.#placement.delete(room);
+    });
+  }
+
   /** Queues a command for the room's next step; commands to a room apply in the order they are sent. */
   command(room: string, command: RoomCommand): Promise<void> {
     return this.#toRoom(room, { kind: 'command', room, command }) as Promise<void>;

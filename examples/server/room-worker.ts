@@ -10,6 +10,8 @@ import { Samples } from './samples';
 
 /** tick times kept for the statistics: the last 10 s */
 const TICK_SAMPLES = 600;
+/** room step times kept for the worker's statistics, over all its rooms */
+const STEP_SAMPLES = 16384;
 
 /** A fixed-rate timer: runs the ticks due since it started, at most `maxCatchUp` at once. */
 class Clock {
@@ -69,11 +71,12 @@ export class RoomWorker {
   /** in the order they came to this worker: the order they are stepped in */
   readonly #rooms = new Map<string, Room>();
   readonly #tickTimes = new Samples(TICK_SAMPLES);
+  readonly #stepTimes = new Samples(STEP_SAMPLES);
   readonly #clock = new Clock(ROOM_DT, () => this.tick());
 
   tick(): void {
     const start = performance.now();
-    for (const room of this.#rooms.values()) room.step();
+    for (const room of this.#rooms.values()) this.#stepTimes.add(room.step());
     this.#tickTimes.add(performance.now() - start);
   }
 
@@ -90,6 +93,10 @@ export class RoomWorker {
         this.#rooms.delete(request.room);
         return { value: packed, transfer: [packed.snapshot.buffer as ArrayBuffer] };
       }
+      case 'remove':
+        this.#room(request.room);
+        this.#rooms.delete(request.room);
+        return { value: undefined };
       case 'command':
         this.#room(request.room).command(request.command);
         return { value: undefined };
@@ -134,12 +141,14 @@ export class RoomWorker {
         steps: room.steps,
         step: room.stepTimes.percentiles(),
       })),
+      step: this.#stepTimes.percentiles(),
       tick: this.#tickTimes.percentiles(),
       ticks: this.#clock.ticks,
       dropped: this.#clock.dropped,
     };
     if (reset) {
       this.#tickTimes.clear();
+      this.#stepTimes.clear();
       for (const room of this.#rooms.values()) room.stepTimes.clear();
       this.#clock.ticks = 0;
       this.#clock.dropped = 0;

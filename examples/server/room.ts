@@ -123,8 +123,8 @@ export class Room {
     this.#pending.push(structuredClone(command));
   }
 
-  /** Applies the queued commands in order, then steps the world by 1/60 s. */
-  step(): void {
+  /** Applies the queued commands in order, then steps the world by 1/60 s; answers the time it took, ms. */
+  step(): number {
     const start = performance.now();
     for (const command of this.#pending) {
       if (command.kind === 'impulse') this.#bodies[command.body].applyLinearImpulse(command.impulse);
@@ -135,7 +135,9 @@ export class Room {
     this.#spawnsPending = 0;
     this.#world.step(ROOM_DT);
     this.#steps++;
-    this.stepTimes.add(performance.now() - start);
+    const ms = performance.now() - start;
+    this.stepTimes.add(ms);
+    return ms;
   }
 
   /** The room at this step boundary, to unpack elsewhere; this room should be dropped after. */

@@ -141,6 +141,9 @@ describe('RoomPool', () => {
     const { world } = buildFulcrumWorld(spec.scene, { enableSleep: false });
     for (let t = 0; t < 30; t++) world.step(ROOM_DT);
     expect(await pool.stateHash('a')).toBe(stateHash(world));
+    await pool.removeRoom('a');
+    await expect(pool.stateHash('a')).rejects.toThrow(/no room "a"/);
+    expect((await pool.stats())[0].rooms).toEqual([]);
   });
 
   describe('reports a worker that fails, and hangs nothing', () => {
