@@ -5,7 +5,8 @@
  * - the pool's overhead: the same rooms in a pool of 1 and of 2 workers, stepped as fast as they go
  *   one tick per round trip, ms per room step against one thread's;
  * - rooms that fit: the largest count whose rooms all keep 60 Hz on the workers' clocks on 1 and on 2
- *   workers, i.e. every worker's p99 time per 1/60 s tick stays under 16.7 ms (a binary search).
+ *   workers, i.e. every worker's p99 time per 1/60 s tick stays under 16.7 ms and no tick is dropped
+ *   (each count measured over 2 s on the clock after 120 ticks of warm-up).
  * Several rounds (the machine is noisy); prints ranges over them and writes bench/results/rooms.json.
  *
  *   npm run bench:rooms -- [--rounds n=2] [--quick]
@@ -104,25 +105,23 @@ async function trial(pool: RoomPool, count: number): Promise<Trial> {
   };
 }
 
-/** the largest count of rooms that keeps 60 Hz, searched about `estimate` */
-async function roomsThatFit(pool: RoomPool, estimate: number): Promise<{ rooms: number; trials: Trial[] }> {
+/**
+ * The largest count of rooms that keeps 60 Hz: first `guess` rooms, then up by a fifth while they fit,
+ * then bisection between the largest count seen to fit and the smallest seen not to.
+ */
+async function roomsThatFit(pool: RoomPool, guess: number): Promise<{ rooms: number; trials: Trial[] }> {
   const trials: Trial[] = [];
-  let fits = Math.max(0, Math.floor(estimate * 0.75));
-  let fails = Math.ceil(estimate * 1.25) + 1;
-  while (fails - fits > 1) {
-    const count = Math.floor((fits + fails) / 2);
+  let fits = 0;
+  let fails = Number.POSITIVE_INFINITY;
+  let count = Math.max(1, Math.round(guess));
+  for (;;) {
     const t = await trial(pool, count);
     trials.push(t);
     if (t.keeps60Hz) fits = count;
     else fails = count;
+    if (fails - fits <= 1) return { rooms: fits, trials };
+    count = fails === Number.POSITIVE_INFINITY ? Math.ceil(fits * 1.2) + 1 : Math.floor((fits + fails) / 2);
   }
-  // the lower bound was a guess: step down until a count is seen to fit
-  while (fits > 0 && !trials.some((t) => t.rooms === fits && t.keeps60Hz)) {
-    const t = await trial(pool, fits);
-    trials.push(t);
-    if (!t.keeps60Hz) fits--;
-  }
-  return { rooms: fits, trials };
 }
 
 interface RoundResult {
@@ -150,10 +149,11 @@ async function main(): Promise<void> {
       const single = oneThread();
       const pool1 = await pooled(pools[0]);
       const pool2 = await pooled(pools[1]);
-      const estimate = BUDGET / single.msPerRoomStep;
-      const fit1 = await roomsThatFit(pools[0], estimate);
-      // two workers: about twice what one held
-      const fit2 = await roomsThatFit(pools[1], 2 * Math.max(1, fit1.rooms));
+      // a room step takes longer among many rooms than among 8, and the p99 of a tick catches every
+      // pause: start at half the one-thread estimate, or at the last round's answer
+      const guess1 = results.at(-1)?.fit1.rooms ?? BUDGET / single.msPerRoomStep / 2;
+      const fit1 = await roomsThatFit(pools[0], guess1);
+      const fit2 = await roomsThatFit(pools[1], results.at(-1)?.fit2.rooms ?? 1.8 * Math.max(1, fit1.rooms));
       const best2 = fit2.trials.find((t) => t.rooms === fit2.rooms && t.keeps60Hz);
       results.push({ round, single, pool1, pool2, fit1, fit2 });
       console.log(
