@@ -1,6 +1,6 @@
 /** Builds a scene in Fulcrum through its public API (../shared/API.md). */
 import { Shape, type ShapeDef, World } from '../src/index';
-import type { Scene, SceneShape } from './types';
+import type { Scene, SceneBody, SceneShape } from './types';
 
 type WorldDef = NonNullable<ConstructorParameters<typeof World>[0]>;
 type FulcrumBody = ReturnType<World['createBody']>;
@@ -41,21 +41,24 @@ function material(shape: SceneShape): Material {
   return def;
 }
 
+/** One body of a scene, with its shapes, in `world` (also for bodies added to a running world). */
+export function createSceneBody(world: World, b: SceneBody): FulcrumBody {
+  const body = world.createBody({
+    type: b.type,
+    position: b.position,
+    angle: b.angle ?? 0,
+    linearVelocity: b.linearVelocity ?? { x: 0, y: 0 },
+    angularVelocity: b.angularVelocity ?? 0,
+    bullet: b.bullet ?? false,
+  });
+  for (const shape of b.shapes) body.createShape(geometry(shape), material(shape));
+  return body;
+}
+
 /** `worldDef` overrides the scene's settings (e.g. `{ enableSleep: false }` for benchmarks) */
 export function buildFulcrumWorld(scene: Scene, worldDef: WorldDef = {}): FulcrumScene {
   const world = new World({ gravity: scene.gravity, ...worldDef });
-  const bodies = scene.bodies.map((b) => {
-    const body = world.createBody({
-      type: b.type,
-      position: b.position,
-      angle: b.angle ?? 0,
-      linearVelocity: b.linearVelocity ?? { x: 0, y: 0 },
-      angularVelocity: b.angularVelocity ?? 0,
-      bullet: b.bullet ?? false,
-    });
-    for (const shape of b.shapes) body.createShape(geometry(shape), material(shape));
-    return body;
-  });
+  const bodies = scene.bodies.map((b) => createSceneBody(world, b));
   const joints = scene.joints.map((j) => {
     const bodyA = bodies[j.bodyA];
     const bodyB = bodies[j.bodyB];
