@@ -4,7 +4,8 @@ import { Limits } from '../core/limits';
 import { Shape } from '../geometry/shapes';
 import type { Geometry } from '../geometry/types';
 import type { Joint } from '../joints/joint';
-import { makeRot, rotAngle } from '../math/rot';
+import { arcTangent2 } from '../math/arc-tangent';
+import { makeRot } from '../math/rot';
 import { type MatterBody, Stale, VELOCITY_TO_SI } from './body';
 import { Composite, type MatterComposite } from './composite';
 import type { MatterConstraint } from './constraint';
@@ -22,13 +23,21 @@ import type { MatterVector } from './vector';
 export interface Simulated {
   body: MatterBody;
   fulcrum: FulcrumBody;
-  /** each part's outline in the body's frame, in the order of body.parts */
-  outlines: MatterVector[][];
+  /** each part's outline in the body's frame (x, y of each vertex in turn), in the order of body.parts */
+  outlines: Float64Array[];
   /** each part's position in the body's frame (compound bodies) */
   offsets: MatterVector[];
   /** the fields a program may set directly that the Fulcrum body was last given */
   frictionAir: number;
   surfaces: SurfaceFields[];
+  /**
+   * the Fulcrum body's rotation when the matter body's angle was last written, and that angle: the
+   * next read-back adds the turn since (matter's angle keeps counting turns, where the rotation's own
+   * angle would wrap at pi)
+   */
+  c: number;
+  s: number;
+  angle: number;
 }
 
 /** A part's contact fields as its Fulcrum shapes have them. */
@@ -177,7 +186,15 @@ function buildShapes(sim: Simulated): void {
     }
   }
   sim.surfaces = body.parts.map(surfaceOf);
-  sim.outlines = body.parts.map((part) => part.vertices.map((p) => toLocal(p, origin, c, s)));
+  sim.outlines = body.parts.map((part) => {
+    const outline = new Float64Array(2 * part.vertices.length);
+    part.vertices.forEach((p, i) => {
+      const q = toLocal(p, origin, c, s);
+      outline[2 * i] = q.x;
+      outline[2 * i + 1] = q.y;
+    });
+    return outline;
+  });
   sim.offsets = body.parts.map((part) => toLocal(part.position, origin, c, s));
   applyMass(sim);
   body._stale = Stale.NO;
@@ -243,6 +260,8 @@ function simulate(link: FulcrumLink, body: MatterBody): Simulated {
     offsets: [],
     frictionAir: body.frictionAir,
     surfaces: [],
+    ...makeRot(body.angle),
+    angle: body.angle,
   };
   buildShapes(sim);
   body._fulcrum = fulcrum;
@@ -338,7 +357,14 @@ export function readBack(sim: Simulated, state: Float64Array): void {
   const cy = state[1];
   const c = state[2];
   const s = state[3];
-  const angle = rotAngle(c, s);
+  // the turn since the angle was last written (from the angle a program set since, if it did)
+  const from = body.angle === sim.angle ? sim : makeRot(body.angle);
+  // deterministic: the angle feeds back into the world (constraint points, Body.setAngle)
+  const turned = arcTangent2(from.c * s - from.s * c, from.c * c + from.s * s);
+  const angle = body.angle + turned;
+  sim.c = c;
+  sim.s = s;
+  sim.angle = angle;
   const position = body.position;
   body.positionPrev.x = position.x;
   body.positionPrev.y = position.y;
@@ -354,7 +380,6 @@ export function readBack(sim: Simulated, state: Float64Array): void {
     body.isSleeping = !awake;
     Events.trigger(body, body.isSleeping ? 'sleepStart' : 'sleepEnd');
   }
-  const turned = angle - body.angle;
   const parts = body.parts;
   for (let k = 0; k < parts.length; k++) {
     const part = parts[k];
@@ -364,10 +389,11 @@ export function readBack(sim: Simulated, state: Float64Array): void {
     let minY = Number.POSITIVE_INFINITY;
     let maxX = Number.NEGATIVE_INFINITY;
     let maxY = Number.NEGATIVE_INFINITY;
-    for (let i = 0; i < outline.length; i++) {
-      const p = outline[i];
-      const x = cx + c * p.x - s * p.y;
-      const y = cy + s * p.x + c * p.y;
+    for (let i = 0, n = outline.length >> 1; i < n; i++) {
+      const px = outline[2 * i];
+      const py = outline[2 * i + 1];
+      const x = cx + c * px - s * py;
+      const y = cy + s * px + c * py;
       const vertex = vertices[i];
       vertex.x = x;
       vertex.y = y;

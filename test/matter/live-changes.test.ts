@@ -46,6 +46,21 @@ describe("fulcrum/matter keeps matter's masses", () => {
     }
   });
 
+  it("a spinning body's angle keeps counting turns, as matter's does (it does not wrap at pi)", () => {
+    const angles: number[] = [];
+    for (const [, Matter] of both) {
+      const engine = Matter.Engine.create();
+      engine.gravity.y = 0;
+      const bar = Matter.Bodies.rectangle(0, 0, 80, 10, { frictionAir: 0 });
+      Matter.Composite.add(engine.world, bar);
+      Matter.Body.setAngularVelocity(bar, 0.3);
+      run(Matter, engine, 60);
+      angles.push(bar.angle);
+    }
+    // 60 updates at 0.3 rad each: 18 rad, almost three turns
+    for (const angle of angles) expect(angle).toBeCloseTo(18, 6);
+  });
+
   it('a mass far beyond what shapes reach (Body.setMass 1e40, or 0) keeps the update running, as matter does', () => {
     const Matter = FulcrumMatter;
     const engine = Matter.Engine.create();
