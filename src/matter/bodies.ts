@@ -10,6 +10,10 @@ export type BodiesOptions = Omit<BodyOptions, 'chamfer'> & {
   chamfer?: { radius?: number | number[]; quality?: number; qualityMin?: number; qualityMax?: number };
 };
 
+function length(x: number, y: number): number {
+  return Math.sqrt(x * x + y * y);
+}
+
 /**
  * The corners of the polygon that, rounded by `radius`, is `points` chamfered by `radius` (each arc's
  * centre: on the corner's bisector, `radius` from both edges), about the chamfered outline's centroid;
@@ -26,8 +30,8 @@ function insetCorners(
     const prev = points[(i + n - 1) % n];
     const v = points[i];
     const next = points[(i + 1) % n];
-    const inLength = Math.sqrt((prev.x - v.x) ** 2 + (prev.y - v.y) ** 2);
-    const outLength = Math.sqrt((next.x - v.x) ** 2 + (next.y - v.y) ** 2);
+    const inLength = length(prev.x - v.x, prev.y - v.y);
+    const outLength = length(next.x - v.x, next.y - v.y);
     const ax = (prev.x - v.x) / inLength;
     const ay = (prev.y - v.y) / inLength;
     const bx = (next.x - v.x) / outLength;
@@ -37,7 +41,7 @@ function insetCorners(
     if (sin === 0) return null;
     const reach = (radius * (1 + cos)) / sin;
     if (reach > inLength / 2 + 1e-9 * inLength || reach > outLength / 2 + 1e-9 * outLength) return null;
-    const bisectorLength = Math.sqrt((ax + bx) ** 2 + (ay + by) ** 2);
+    const bisectorLength = length(ax + bx, ay + by);
     const toCentre = radius / Math.sqrt((1 - cos) / 2);
     corners.push({
       x: v.x + ((ax + bx) / bisectorLength) * toCentre - centre.x,

@@ -43,6 +43,12 @@ export function isPointerConstraint(constraint: MatterConstraint): boolean {
   return (constraint as { _pointer?: boolean })._pointer === true;
 }
 
+function distance(a: MatterVector, b: MatterVector): number {
+  const dx = a.x - b.x;
+  const dy = a.y - b.y;
+  return Math.sqrt(dx * dx + dy * dy);
+}
+
 /** The world point of an end: the body's position plus the offset, or the offset itself without a body. */
 function worldPoint(body: MatterBody | null, point: MatterVector): MatterVector {
   return body ? { x: body.position.x + point.x, y: body.position.y + point.y } : { x: point.x, y: point.y };
@@ -57,7 +63,7 @@ export const Constraint = {
     const bodyB = options.bodyB ?? null;
     const a = worldPoint(bodyA, pointA);
     const b = worldPoint(bodyB, pointB);
-    const length = options.length ?? Math.sqrt((a.x - b.x) ** 2 + (a.y - b.y) ** 2);
+    const length = options.length ?? distance(a, b);
     const stiffness = options.stiffness || (length > 0 ? 1 : 0.7);
     const render = {
       visible: true,
@@ -101,6 +107,6 @@ export const Constraint = {
   currentLength(constraint: MatterConstraint): number {
     const a = Constraint.pointAWorld(constraint);
     const b = Constraint.pointBWorld(constraint);
-    return Math.sqrt((a.x - b.x) ** 2 + (a.y - b.y) ** 2);
+    return distance(a, b);
   },
 };

@@ -129,7 +129,9 @@ function roundedShape({ corners, radius }: Rounded): Geometry {
     const q = points[(i + 1) % points.length];
     doubleArea += p.x * q.y - q.x * p.y;
     for (let j = i + 1; j < points.length; j++) {
-      const d = (points[j].x - p.x) ** 2 + (points[j].y - p.y) ** 2;
+      const dx = points[j].x - p.x;
+      const dy = points[j].y - p.y;
+      const d = dx * dx + dy * dy;
       if (d > extent) {
         extent = d;
         ends = [p, points[j]];

@@ -168,6 +168,8 @@ export const Vertices = {
       const fromY = v.y + a.y * reach - cy;
       const sweep = Math.PI - turn; // the arc turns as far as the outline does at the corner
       const direction = a.x * b.y - a.y * b.x > 0 ? -1 : 1;
+      // matter's count of arc points; Math.pow is not bit-exact everywhere, but only a value within a
+      // rounding error of an even integer could change the count (the points themselves are exact)
       let steps = quality !== undefined && quality !== -1 ? quality : 1.75 * r ** 0.32;
       steps = Math.min(Math.max(steps, qualityMin || 2), qualityMax || 14);
       steps = Math.ceil(steps / 2) * 2; // even, as matter keeps it

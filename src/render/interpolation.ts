@@ -1,5 +1,6 @@
 import type { Body } from '../api/body';
 import type { World } from '../api/world';
+import { blendTransform } from '../math/blend';
 import type { Transform } from '../math/vec2';
 
 function grow(a: Float64Array<ArrayBuffer>, n: number): Float64Array<ArrayBuffer> {
@@ -64,21 +65,6 @@ export class Interpolator {
       out.q.s = cs;
       return out;
     }
-    out.p.x = this.px[b] + (cx - this.px[b]) * t;
-    out.p.y = this.py[b] + (cy - this.py[b]) * t;
-    // normalised linear blend of the rotations (output only)
-    let c = this.qc[b] + (cc - this.qc[b]) * t;
-    let s = this.qs[b] + (cs - this.qs[b]) * t;
-    const length = Math.sqrt(c * c + s * s);
-    if (length > 1e-9) {
-      c /= length;
-      s /= length;
-    } else {
-      c = cc;
-      s = cs;
-    }
-    out.q.c = c;
-    out.q.s = s;
-    return out;
+    return blendTransform(this.px[b], this.py[b], this.qc[b], this.qs[b], cx, cy, cc, cs, t, out);
   }
 }

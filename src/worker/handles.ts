@@ -12,6 +12,7 @@ import {
 } from '../core/limits';
 import { type Chain, type Concave, type Geometry, ShapeKind } from '../geometry/types';
 import type { JointType } from '../joints/registry';
+import { blendTransform } from '../math/blend';
 import { makeRot, rotAngle } from '../math/rot';
 import type { Transform, Vec2 } from '../math/vec2';
 import { checkKindChange } from '../world/world-edits';
@@ -135,29 +136,18 @@ export class WorkerBody {
     out: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } },
   ): Transform {
     const t = checkRange('alpha', alpha, 0, 1);
-    const px = this.#read(Row.PX);
-    const py = this.#read(Row.PY);
-    const qc = this.#read(Row.QC);
-    const qs = this.#read(Row.QS);
-    const ppx = this.#read(Row.PREV_PX);
-    const ppy = this.#read(Row.PREV_PY);
-    const pqc = this.#read(Row.PREV_QC);
-    const pqs = this.#read(Row.PREV_QS);
-    out.p.x = ppx + (px - ppx) * t;
-    out.p.y = ppy + (py - ppy) * t;
-    let c = pqc + (qc - pqc) * t;
-    let s = pqs + (qs - pqs) * t;
-    const length = Math.sqrt(c * c + s * s);
-    if (length > 1e-9) {
-      c /= length;
-      s /= length;
-    } else {
-      c = qc;
-      s = qs;
-    }
-    out.q.c = c;
-    out.q.s = s;
-    return out;
+    return blendTransform(
+      this.#read(Row.PREV_PX),
+      this.#read(Row.PREV_PY),
+      this.#read(Row.PREV_QC),
+      this.#read(Row.PREV_QS),
+      this.#read(Row.PX),
+      this.#read(Row.PY),
+      this.#read(Row.QC),
+      this.#read(Row.QS),
+      t,
+      out,
+    );
   }
 
   /** shapes in creation order */

@@ -1,6 +1,5 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import FulcrumMatter from '../../src/matter/index';
-import { type M, RealMatter } from '../helpers/matter-both';
+import { both, type M } from '../helpers/matter-both';
 
 /** A stand-in for a canvas of 800 by 600 at the page's origin: it keeps the listeners it is given. */
 function fakeCanvas() {
@@ -40,24 +39,26 @@ afterAll(() => {
   delete page.document;
 });
 
+/** A `width` by `height` box resting on the ground (top at y = 580, centred on x = 400), a mouse constraint on a canvas. */
+function boxOnTheGround(Matter: M, width: number, height: number) {
+  const engine = Matter.Engine.create();
+  const ground = Matter.Bodies.rectangle(400, 590, 800, 20, { isStatic: true });
+  const box = Matter.Bodies.rectangle(400, 580 - height / 2, width, height);
+  const canvas = fakeCanvas();
+  const drag = Matter.MouseConstraint.create(engine, { mouse: Matter.Mouse.create(canvas as never) });
+  Matter.Composite.add(engine.world, [ground, box, drag as never]);
+  for (let i = 0; i < 30; i++) Matter.Engine.update(engine);
+  return { engine, box, canvas, drag };
+}
+
 describe('fulcrum/matter Mouse and MouseConstraint', () => {
   it('a drag lifts the box under the mouse toward the pointer, as on matter.js, with the drag events', () => {
-    for (const [name, Matter] of [
-      ['matter-js', RealMatter as M],
-      ['fulcrum/matter', FulcrumMatter],
-    ] as const) {
-      const engine = Matter.Engine.create();
-      const ground = Matter.Bodies.rectangle(400, 590, 800, 20, { isStatic: true });
-      const box = Matter.Bodies.rectangle(400, 560, 40, 40);
-      const canvas = fakeCanvas();
-      const mouse = Matter.Mouse.create(canvas as never);
-      const drag = Matter.MouseConstraint.create(engine, { mouse });
-      Matter.Composite.add(engine.world, [ground, box, drag as never]);
+    for (const [name, Matter] of both) {
+      const { engine, box, canvas, drag } = boxOnTheGround(Matter, 40, 40);
       const seen: string[] = [];
       Matter.Events.on(drag, 'startdrag', () => seen.push('start'));
       Matter.Events.on(drag, 'enddrag', () => seen.push('end'));
       Matter.Events.on(drag, 'mousedown', () => seen.push('down'));
-      for (let i = 0; i < 30; i++) Matter.Engine.update(engine);
       canvas.fire('mousedown', 400, 560);
       Matter.Engine.update(engine);
       // the pointer goes up 200 px and stays there for 2 s
@@ -76,18 +77,8 @@ describe('fulcrum/matter Mouse and MouseConstraint', () => {
     }
   });
   it('a box grabbed by its corner and lifted is not swung round by the pull (angularStiffness 1), as on matter.js', () => {
-    for (const [name, Matter] of [
-      ['matter-js', RealMatter as M],
-      ['fulcrum/matter', FulcrumMatter],
-    ] as const) {
-      const engine = Matter.Engine.create();
-      const ground = Matter.Bodies.rectangle(400, 590, 800, 20, { isStatic: true });
-      const box = Matter.Bodies.rectangle(400, 550, 80, 60);
-      const canvas = fakeCanvas();
-      const mouse = Matter.Mouse.create(canvas as never);
-      const drag = Matter.MouseConstraint.create(engine, { mouse });
-      Matter.Composite.add(engine.world, [ground, box, drag as never]);
-      for (let i = 0; i < 30; i++) Matter.Engine.update(engine);
+    for (const [name, Matter] of both) {
+      const { engine, box, canvas } = boxOnTheGround(Matter, 80, 60);
       // near the top left corner, 35 px left of the centre and 25 above it
       canvas.fire('mousedown', 365, 525);
       Matter.Engine.update(engine);
@@ -102,17 +93,8 @@ describe('fulcrum/matter Mouse and MouseConstraint', () => {
     }
   });
   it('a finger drags as the mouse does (touchstart, touchmove, touchend), as on matter.js', () => {
-    for (const [name, Matter] of [
-      ['matter-js', RealMatter as M],
-      ['fulcrum/matter', FulcrumMatter],
-    ] as const) {
-      const engine = Matter.Engine.create();
-      const ground = Matter.Bodies.rectangle(400, 590, 800, 20, { isStatic: true });
-      const box = Matter.Bodies.rectangle(400, 560, 40, 40);
-      const canvas = fakeCanvas();
-      const drag = Matter.MouseConstraint.create(engine, { mouse: Matter.Mouse.create(canvas as never) });
-      Matter.Composite.add(engine.world, [ground, box, drag as never]);
-      for (let i = 0; i < 30; i++) Matter.Engine.update(engine);
+    for (const [name, Matter] of both) {
+      const { engine, box, canvas } = boxOnTheGround(Matter, 40, 40);
       canvas.touch('touchstart', 400, 560);
       Matter.Engine.update(engine);
       for (let i = 1; i <= 20; i++) {
