@@ -225,3 +225,108 @@ describe('fulcrum/matter chamfered rectangles', () => {
     expect(Math.abs(rounded.position.y - 560)).toBeLessThan(0.5);
   });
 });
+
+describe('fulcrum/matter vertices and bounds', () => {
+  /** the rectangle's corners at centre (x, y) turned by `angle`, as matter orders them */
+  const corners = (x: number, y: number, w: number, h: number, angle: number) =>
+    [
+      [-w / 2, -h / 2],
+      [w / 2, -h / 2],
+      [w / 2, h / 2],
+      [-w / 2, h / 2],
+    ].map(([px, py]) => ({
+      x: x + Math.cos(angle) * px - Math.sin(angle) * py,
+      y: y + Math.sin(angle) * px + Math.cos(angle) * py,
+    }));
+
+  it('follow the body after every update, whether or not the program read them in between', () => {
+    for (const [name, Matter] of both) {
+      const engine = Matter.Engine.create();
+      engine.gravity.y = 0;
+      const box = Matter.Bodies.rectangle(100, 200, 60, 20, { frictionAir: 0 });
+      Matter.Composite.add(engine.world, box);
+      Matter.Body.setVelocity(box, { x: 3, y: -1 });
+      Matter.Body.setAngularVelocity(box, 0.05);
+      for (let i = 1; i <= 40; i++) {
+        Matter.Engine.update(engine);
+        // free flight: the position moves on by the velocity each update, the angle by the spin
+        if (i % 7 !== 0) continue;
+        const expected = corners(box.position.x, box.position.y, 60, 20, box.angle);
+        box.vertices.forEach((v, k) => {
+          expect(Math.abs(v.x - expected[k].x), `${name} update ${i}`).toBeLessThan(1e-9);
+          expect(Math.abs(v.y - expected[k].y), `${name} update ${i}`).toBeLessThan(1e-9);
+        });
+        // the bounds hold the vertices, widened by the velocity along its direction (as matter's)
+        const xs = expected.map((p) => p.x);
+        const ys = expected.map((p) => p.y);
+        expect(box.bounds.min.x).toBeCloseTo(Math.min(...xs), 9);
+        expect(box.bounds.max.x).toBeCloseTo(Math.max(...xs) + box.velocity.x, 9);
+        expect(box.bounds.min.y).toBeCloseTo(Math.min(...ys) + box.velocity.y, 9);
+        expect(box.bounds.max.y).toBeCloseTo(Math.max(...ys), 9);
+      }
+      expect(box.position.x, name).toBeCloseTo(100 + 40 * 3, 6);
+      expect(box.angle, name).toBeCloseTo(40 * 0.05, 6);
+    }
+  });
+
+  it('move with Body.setPosition and setAngle right after an update that nobody read', () => {
+    for (const [name, Matter] of both) {
+      const engine = Matter.Engine.create();
+      engine.gravity.y = 0;
+      const box = Matter.Bodies.rectangle(100, 200, 60, 20, { frictionAir: 0 });
+      Matter.Composite.add(engine.world, box);
+      Matter.Body.setVelocity(box, { x: 2, y: 0 });
+      Matter.Body.setAngularVelocity(box, 0.02);
+      for (let i = 0; i < 10; i++) Matter.Engine.update(engine);
+      Matter.Body.setPosition(box, { x: 300, y: 50 });
+      Matter.Body.setAngle(box, 1);
+      const expected = corners(300, 50, 60, 20, 1);
+      box.vertices.forEach((v, k) => {
+        expect(Math.abs(v.x - expected[k].x), name).toBeLessThan(1e-9);
+        expect(Math.abs(v.y - expected[k].y), name).toBeLessThan(1e-9);
+      });
+    }
+  });
+
+  it("of a compound body's parts follow it, and a body taken out of the world keeps its last pose", () => {
+    for (const [name, Matter] of both) {
+      const engine = Matter.Engine.create();
+      engine.gravity.y = 0;
+      const left = Matter.Bodies.rectangle(80, 100, 40, 40);
+      const right = Matter.Bodies.rectangle(120, 100, 40, 40);
+      const body = Matter.Body.create({ parts: [left, right], frictionAir: 0 });
+      Matter.Composite.add(engine.world, body);
+      Matter.Body.setVelocity(body, { x: 1, y: 2 });
+      Matter.Body.setAngularVelocity(body, 0.03);
+      for (let i = 0; i < 20; i++) Matter.Engine.update(engine);
+      for (const part of [left, right]) {
+        const centre = part.vertices.reduce((a, v) => ({ x: a.x + v.x / 4, y: a.y + v.y / 4 }), {
+          x: 0,
+          y: 0,
+        });
+        expect(Math.abs(centre.x - part.position.x), name).toBeLessThan(1e-9);
+        expect(Math.abs(centre.y - part.position.y), name).toBeLessThan(1e-9);
+        const expected = corners(part.position.x, part.position.y, 40, 40, body.angle);
+        part.vertices.forEach((v, k) => {
+          expect(Math.abs(v.x - expected[k].x), name).toBeLessThan(1e-9);
+          expect(Math.abs(v.y - expected[k].y), name).toBeLessThan(1e-9);
+        });
+      }
+      Matter.Engine.update(engine);
+      Matter.Composite.remove(engine.world, body);
+      Matter.Engine.update(engine);
+      const at = { ...body.position };
+      const expected = corners(
+        at.x - 20 * Math.cos(body.angle),
+        at.y - 20 * Math.sin(body.angle),
+        40,
+        40,
+        body.angle,
+      );
+      left.vertices.forEach((v, k) => {
+        expect(Math.abs(v.x - expected[k].x), name).toBeLessThan(1e-9);
+        expect(Math.abs(v.y - expected[k].y), name).toBeLessThan(1e-9);
+      });
+    }
+  });
+});

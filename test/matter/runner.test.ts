@@ -2,8 +2,22 @@ import { describe, expect, it } from 'vitest';
 import FulcrumMatter from '../../src/matter/index';
 import { type M, RealMatter } from '../helpers/matter-both';
 
-/** Updates per tick when frames come every `frame` ms for `seconds`, by `Runner.tick` driven by hand. */
+/**
+ * Updates per tick when frames come every `frame` ms for `seconds`, by `Runner.tick` driven by hand.
+ * The updates take no time by the clock both runners read (Common.now): a runner stops a tick's
+ * updates once they have taken its frame's time, and how long they take depends on the machine.
+ */
 function updatesPerTick(Matter: M, frame: number, seconds: number, options = {}): number[] {
+  const now = Matter.Common.now;
+  Matter.Common.now = () => 0;
+  try {
+    return ticks(Matter, frame, seconds, options);
+  } finally {
+    Matter.Common.now = now;
+  }
+}
+
+function ticks(Matter: M, frame: number, seconds: number, options: object): number[] {
   const engine = Matter.Engine.create();
   Matter.Composite.add(engine.world, Matter.Bodies.rectangle(0, 0, 10, 10));
   const runner = Matter.Runner.create(options);
