@@ -106,10 +106,12 @@ export default defineConfig({
     target: 'es2022',
     chunkSizeWarningLimit: 1500,
     rollupOptions: {
-      // the demo gallery, and its page of matter.js programs run on fulcrum/matter and on matter.js
+      // the demo gallery, its page of matter.js programs run on fulcrum/matter and on matter.js, and
+      // its client of the Colyseus physics rooms (examples/colyseus)
       input: {
         index: fileURLToPath(new URL('./examples/index.html', import.meta.url)),
         matter: fileURLToPath(new URL('./examples/matter.html', import.meta.url)),
+        colyseus: fileURLToPath(new URL('./examples/colyseus.html', import.meta.url)),
       },
       onwarn(warning, warn) {
         // p5's dependency zod places /*@__PURE__*/ comments where Rollup cannot use them: not ours to fix
