@@ -1,6 +1,7 @@
 /** Small helpers the demos share. */
 import { type Body, Shape, type ShapeDef, type Transform, type Vec2, type World } from '../src/index';
 import type { Runner } from '../src/render/index';
+import type { DemoContext } from './demo';
 
 /** A static ground box whose top face is at y = top. */
 export function ground(world: World, halfWidth: number, top = 0, centerX = 0): Body {
@@ -67,6 +68,46 @@ export function drawnPosition(runner: Runner, body: Body): Vec2 {
   if (!runner.interpolate || !body.isValid) return body.position;
   const t = runner.interpolator.transformOf(body, scratch);
   return { x: t.p.x, y: t.p.y };
+}
+
+/**
+ * A camera that eases towards `target()` (a world point, read after each step) by `rate` of the way
+ * each step, drawn between its last two places as the bodies are: it moves with the simulation, not
+ * with the frame rate, so the picture at a given step is the same on every display. `active()` false
+ * leaves the camera to the user. Returns the clean-up.
+ */
+export function followWithCamera(
+  ctx: DemoContext,
+  world: World,
+  target: () => Vec2,
+  rate: number,
+  active: () => boolean = () => true,
+): () => void {
+  const camera = ctx.render.camera;
+  let previous = { ...camera.center };
+  let current = { ...camera.center };
+  const stop = world.on('postStep', () => {
+    if (!active()) return;
+    const to = target();
+    previous = current;
+    current = { x: current.x + (to.x - current.x) * rate, y: current.y + (to.y - current.y) * rate };
+  });
+  const stopDraw = ctx.render.on('beforeDraw', () => {
+    if (!active()) {
+      previous = { ...camera.center };
+      current = previous;
+      return;
+    }
+    const t = ctx.runner.interpolate ? ctx.runner.alpha : 1;
+    camera.center = {
+      x: previous.x + (current.x - previous.x) * t,
+      y: previous.y + (current.y - previous.y) * t,
+    };
+  });
+  return () => {
+    stop();
+    stopDraw();
+  };
 }
 
 /** Calls `handler(down)` while any of `keys` is held; returns the clean-up. */

@@ -2,7 +2,7 @@ import { buildFulcrumWorld } from '../../scenes/build-fulcrum';
 import { carOnHills } from '../../scenes/index';
 import { type Body, Shape, type Vec2, type WheelJoint } from '../../src/index';
 import type { Demo } from '../demo';
-import { drawnPosition, onKeys } from '../lib';
+import { followWithCamera, onKeys } from '../lib';
 
 const LENGTH = 60;
 /** wheel speed of the motors, rad/s (negative turns the wheels clockwise: forward) */
@@ -106,18 +106,16 @@ export const carDemo: Demo = {
         render.setScreenTransform();
       }),
     );
+    // keep the car a third of the way across, looking ahead
+    const camera = ctx.render.camera;
     ctx.track(
-      ctx.render.on('beforeDraw', () => {
-        if (!follow) return;
-        const camera = ctx.render.camera;
-        const p = drawnPosition(ctx.runner, chassis);
-        // keep the car a third of the way across, looking ahead
-        const aheadX = p.x + camera.halfHeight * 0.5;
-        camera.center = {
-          x: camera.center.x + (aheadX - camera.center.x) * 0.1,
-          y: camera.center.y + (p.y + 1 - camera.center.y) * 0.1,
-        };
-      }),
+      followWithCamera(
+        ctx,
+        world,
+        () => ({ x: chassis.position.x + camera.halfHeight * 0.5, y: chassis.position.y + 1 }),
+        0.1,
+        () => follow,
+      ),
     );
     return { world, chassis, wheels, drive: () => drive };
   },

@@ -1,6 +1,6 @@
 import { type Body, parseSvgPath, Shape, type Vec2, type WheelJoint, World } from '../../src/index';
 import type { Demo } from '../demo';
-import { drawnPosition, onKeys } from '../lib';
+import { followWithCamera, onKeys } from '../lib';
 import LEVEL from './svg-terrain.svg?raw';
 
 /**
@@ -101,13 +101,16 @@ export const svgTerrainDemo: Demo = {
         context.closePath();
         context.fill();
         render.setScreenTransform();
-        const camera = render.camera;
-        const p = drawnPosition(ctx.runner, chassis);
-        camera.center = {
-          x: camera.center.x + (p.x + camera.halfHeight * 0.4 - camera.center.x) * 0.08,
-          y: camera.center.y + (p.y + 1 - camera.center.y) * 0.08,
-        };
       }),
+    );
+    const camera = ctx.render.camera;
+    ctx.track(
+      followWithCamera(
+        ctx,
+        world,
+        () => ({ x: chassis.position.x + camera.halfHeight * 0.4, y: chassis.position.y + 1 }),
+        0.08,
+      ),
     );
     return { world, chassis, wheels, segments, speed: () => motorSpeed };
   },

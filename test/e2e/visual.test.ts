@@ -1,0 +1,77 @@
+/**
+ * Visual regression: each demo of the gallery, started again paused and stepped by hand to step 60,
+ * looks as its stored picture (test/e2e/baselines/<id>.png) does, but for a small share of pixels.
+ * Steps taken by hand make the picture the same on every run and machine speed; the tolerance is for
+ * anti-aliasing that a different Chromium build may draw a little differently. A change that moves,
+ * recolours or hides what a demo shows fails here: look at the picture written beside the stored one
+ * under test-results/e2e/visual/, and if the change is wanted, store the new pictures with
+ * `UPDATE_VISUALS=1 npx vitest run --config vitest.e2e.config.ts test/e2e/visual.test.ts`.
+ */
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
+import { demos } from '../../examples/registry';
+import { type Browser, launchChromium } from './browser';
+import {
+  drawsItself,
+  openDemo,
+  restartPaused,
+  stepByHand,
+  waitForDrawnStep,
+  waitForOwnRenderer,
+} from './gallery-page';
+import { decodePng, differingShare } from './png';
+
+const BASELINES = resolve(__dirname, 'baselines');
+const ACTUAL = resolve(__dirname, '../../test-results/e2e/visual');
+const UPDATE = process.env.UPDATE_VISUALS === '1';
+/** the step each picture is taken at */
+const STEPS = 60;
+/** the share of pixels that may differ (by more than 8 levels in a channel) from the stored picture */
+const TOLERANCE = 0.005;
+
+let browser: Browser;
+const url = inject('galleryUrl');
+
+beforeAll(async () => {
+  mkdirSync(ACTUAL, { recursive: true });
+  if (UPDATE) mkdirSync(BASELINES, { recursive: true });
+  browser = await launchChromium();
+});
+
+afterAll(async () => {
+  await browser?.close();
+});
+
+describe('every demo looks as stored', () => {
+  for (const demo of demos) {
+    it(`${demo.id} at step ${STEPS}`, async () => {
+      const open = await openDemo(browser.context, url, demo.id);
+      try {
+        await restartPaused(open.page);
+        const ownRenderer = await drawsItself(open.page);
+        if (ownRenderer) await waitForOwnRenderer(open.page);
+        await stepByHand(open.page, STEPS);
+        if (ownRenderer) await waitForDrawnStep(open.page);
+        const png = await open.page.locator('#stage').screenshot({ animations: 'disabled' });
+        const stored = resolve(BASELINES, `${demo.id}.png`);
+        if (UPDATE) {
+          writeFileSync(stored, png);
+          return;
+        }
+        if (!existsSync(stored)) {
+          writeFileSync(resolve(ACTUAL, `${demo.id}.png`), png);
+          throw new Error(`no stored picture of ${demo.id} (${stored}): store one with UPDATE_VISUALS=1`);
+        }
+        const share = differingShare(decodePng(readFileSync(stored)), decodePng(png));
+        if (share > TOLERANCE) writeFileSync(resolve(ACTUAL, `${demo.id}.png`), png);
+        expect(share, `share of pixels unlike the stored picture of ${demo.id}`).toBeLessThanOrEqual(
+          TOLERANCE,
+        );
+        expect(open.errors).toEqual([]);
+      } finally {
+        await open.close();
+      }
+    });
+  }
+});
