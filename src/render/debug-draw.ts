@@ -337,7 +337,8 @@ function drawJoints(source: DrawSource, draw: DebugDraw, options?: DrawWorldOpti
 
 /**
  * Draws a world through `draw`: shapes first, then AABBs, joints, contacts, velocities and centres
- * of mass, as `flags` ask. Reads the world and never changes it.
+ * of mass, as `flags` ask. `world` is a World, a WorkerWorld (no AABBs or contacts: its worker keeps
+ * them) or any drawing source. Reads the world and never changes it.
  */
 export function drawWorld(
   world: AnyWorld | DrawSource,
