@@ -21,6 +21,16 @@ const TYPES: Record<string, string> = {
   '.woff2': 'font/woff2',
 };
 
+/**
+ * Cross-origin isolation, so that SharedArrayBuffer exists and a worker world (fulcrum/worker) shares
+ * its state with the page instead of passing buffers back and forth. Everything the gallery loads is
+ * its own (bundled), so require-corp blocks nothing.
+ */
+export const ISOLATION_HEADERS = Object.freeze({
+  'Cross-Origin-Opener-Policy': 'same-origin',
+  'Cross-Origin-Embedder-Policy': 'require-corp',
+});
+
 const NOT_BUILT = `<!doctype html><meta charset="utf-8"><title>Fulcrum docs</title>
 <h1>The documentation is not built</h1>
 <p>Run <code>npm run docs</code> and reload, or <code>npm run docs:dev</code> to work on it.</p>`;
@@ -43,9 +53,12 @@ function docsBesideGallery(): Plugin {
         }
         if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
         if (!existsSync(DOCS_DIST)) {
-          response.writeHead(200, { 'content-type': TYPES['.html'] }).end(NOT_BUILT);
+          response.writeHead(200, { 'content-type': TYPES['.html'], ...ISOLATION_HEADERS }).end(NOT_BUILT);
         } else if (existsSync(file)) {
-          response.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
+          response.writeHead(200, {
+            'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
+            ...ISOLATION_HEADERS,
+          });
           response.end(readFileSync(file));
         } else {
           response.writeHead(404).end('not found');
@@ -86,6 +99,7 @@ function scriptTagBuild(): Plugin {
         bundle().then((code) => {
           response.setHeader('content-type', 'text/javascript; charset=utf-8');
           response.setHeader('cache-control', 'no-store');
+          for (const [name, value] of Object.entries(ISOLATION_HEADERS)) response.setHeader(name, value);
           response.end(code);
         }, next);
       });
@@ -120,8 +134,12 @@ export default defineConfig({
       },
     },
   },
+  // fulcrum/worker's worker script, bundled by `?worker&url`: a module worker, as WorkerWorld starts it
+  worker: { format: 'es' },
   server: {
     // open a browser tab where there is a desktop; on CI and headless machines just print the address
     open: !process.env.CI && (process.platform !== 'linux' || Boolean(process.env.DISPLAY)),
+    headers: { ...ISOLATION_HEADERS },
   },
+  preview: { headers: { ...ISOLATION_HEADERS } },
 });

@@ -3,3 +3,9 @@ declare module '*?raw' {
   const text: string;
   export default text;
 }
+
+/** Vite's worker URLs: `import url from './entry.ts?worker&url'` bundles the script and gives its URL. */
+declare module '*?worker&url' {
+  const url: string;
+  export default url;
+}

@@ -1,11 +1,10 @@
 /** What a demo of the gallery is: a function that builds a world, plus a title and a camera. */
-import type { World } from '../src/index';
-import type { CameraView, DebugDrawFlags, Pointer, Render, Runner } from '../src/render/index';
+import type { AnyWorld, CameraView, DebugDrawFlags, Pointer, Render, Runner } from '../src/render/index';
 
 export interface DemoContext {
-  render: Render;
-  runner: Runner;
-  pointer: Pointer;
+  render: Render<AnyWorld>;
+  runner: Runner<AnyWorld>;
+  pointer: Pointer<AnyWorld>;
   /** the stage element (holds the canvas); a demo may add its own canvas here */
   stage: HTMLElement;
   /** a layer over the stage for the demo's own buttons and text */
@@ -21,7 +20,8 @@ export interface DemoContext {
 }
 
 export interface DemoInstance {
-  world: World;
+  /** a World on the page's thread, or a WorkerWorld (fulcrum/worker) stepped in a worker */
+  world: AnyWorld;
   /** extra state the e2e tests and curious people can read from window.gallery.instance */
   [key: string]: unknown;
   dispose?(): void;
@@ -37,5 +37,6 @@ export interface Demo {
   drawSwitches?: boolean;
   /** steps one frame may take at most (default 4) */
   maxStepsPerFrame?: number;
-  create(ctx: DemoContext): DemoInstance;
+  /** builds the demo; a worker world's demo resolves once its worker runs */
+  create(ctx: DemoContext): DemoInstance | Promise<DemoInstance>;
 }

@@ -1,6 +1,6 @@
 /** Small helpers the demos share. */
 import { type Body, Shape, type ShapeDef, type Transform, type Vec2, type World } from '../src/index';
-import type { Runner } from '../src/render/index';
+import type { AnyWorld, Runner } from '../src/render/index';
 import type { DemoContext } from './demo';
 
 /** A static ground box whose top face is at y = top. */
@@ -64,7 +64,7 @@ export function worldText(
 const scratch: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
 
 /** Where the runner draws a body's origin this frame (between its last two states). */
-export function drawnPosition(runner: Runner, body: Body): Vec2 {
+export function drawnPosition(runner: Runner<AnyWorld>, body: Body): Vec2 {
   if (!runner.interpolate || !body.isValid) return body.position;
   const t = runner.interpolator.transformOf(body, scratch);
   return { x: t.p.x, y: t.p.y };

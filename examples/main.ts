@@ -1,5 +1,13 @@
 /** The gallery shell: the demo list, the controls, the readout, and the demo that is running. */
-import { type DebugDrawFlags, defaultDebugDrawFlags, Pointer, Render, Runner } from '../src/render/index';
+import {
+  type AnyWorld,
+  type DebugDrawFlags,
+  defaultDebugDrawFlags,
+  isWorkerWorld,
+  Pointer,
+  Render,
+  Runner,
+} from '../src/render/index';
 import type { Demo, DemoContext, DemoInstance } from './demo';
 import { demos, findDemo } from './registry';
 
@@ -12,9 +20,9 @@ function $(id: string): HTMLElement {
 const canvas = $('view') as HTMLCanvasElement;
 const stage = $('stage');
 const ui = $('demo-ui');
-const render = new Render({ canvas });
-const runner = new Runner({ render });
-const pointer = new Pointer({ render });
+const render = new Render<AnyWorld>({ canvas });
+const runner = new Runner<AnyWorld>({ render });
+const pointer = new Pointer<AnyWorld>({ render });
 
 const flagLabels: [keyof DebugDrawFlags, string][] = [
   ['shapes', 'shapes'],
@@ -54,8 +62,13 @@ for (const demo of demos) {
 let current: Demo | null = null;
 let instance: DemoInstance | null = null;
 const cleanups: (() => void)[] = [];
+/** demos started so far: a demo whose world runs in a worker starts once its worker runs */
+let started = 0;
+/** tells a demo still being made (a worker world's) that it has been left meanwhile */
+let starting = 0;
 
 function stopDemo(): void {
+  starting++;
   for (const cleanup of cleanups.splice(0).reverse()) {
     try {
       cleanup();
@@ -63,9 +76,11 @@ function stopDemo(): void {
       console.error(error);
     }
   }
+  // before dispose: a worker world ended by it takes no more commands
+  pointer.endDrag();
   instance?.dispose?.();
   instance = null;
-  pointer.endDrag();
+  runner.setWorld(null);
   ui.replaceChildren();
   $('demo-status').textContent = '';
   // undo what a demo may have changed
@@ -107,15 +122,35 @@ function startDemo(demo: Demo): void {
       runner.render = null;
     },
   };
-  instance = demo.create(ctx);
-  runner.setWorld(instance.world);
-  render.world = instance.world;
   $('demo-title').textContent = demo.title;
   $('demo-description').textContent = demo.description;
   document.title = `${demo.title} — Fulcrum`;
   list.querySelectorAll('a').forEach((a) => {
     a.classList.toggle('active', a.dataset.demo === demo.id);
   });
+  const made = demo.create(ctx);
+  if (!(made instanceof Promise)) {
+    show(made);
+    return;
+  }
+  const ticket = starting;
+  made.then(
+    (ready) => {
+      if (ticket === starting) show(ready);
+      else ready.dispose?.();
+    },
+    (error: unknown) => {
+      if (ticket === starting) ctx.setStatus(`could not start: ${String(error)}`);
+      console.error(error);
+    },
+  );
+}
+
+function show(made: DemoInstance): void {
+  instance = made;
+  runner.setWorld(made.world);
+  render.world = made.world;
+  started++;
   exposeState();
 }
 
@@ -128,6 +163,7 @@ function exposeState(): void {
     demo: current?.id,
     instance,
     world: instance?.world,
+    started,
   };
 }
 
@@ -180,8 +216,9 @@ setInterval(() => {
   const world = runner.world;
   if (!world) return;
   stats.bodies.textContent = String(world.bodyCount);
-  stats.awake.textContent = String(world.awakeBodyCount);
-  stats.contacts.textContent = String(world.contactCount);
+  // counted in the worker, for a worker world: not on this thread
+  stats.awake.textContent = isWorkerWorld(world) ? '–' : String(world.awakeBodyCount);
+  stats.contacts.textContent = isWorkerWorld(world) ? '–' : String(world.contactCount);
   stats.step.textContent = runner.stepMs.toFixed(2);
   stats.fps.textContent = runner.fps.toFixed(0);
 }, 250);

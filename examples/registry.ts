@@ -21,6 +21,7 @@ import { rayCastDemo } from './demos/ray-cast';
 import { slingshotDemo } from './demos/slingshot';
 import { softBodyDemo } from './demos/soft-body';
 import { stressDemo } from './demos/stress';
+import { stressWorkerDemo } from './demos/stress-worker';
 import { svgTerrainDemo } from './demos/svg-terrain';
 import { tumblerDemo } from './demos/tumbler';
 
@@ -45,6 +46,7 @@ export const demos: readonly Demo[] = [
   rayCastDemo,
   tumblerDemo,
   stressDemo,
+  stressWorkerDemo,
   pixiDemo,
   p5Demo,
   phaserDemo,

@@ -1,8 +1,8 @@
-import type { Body } from '../api/body';
 import type { Transform, Vec2 } from '../math/vec2';
 import { requireBrowser } from './browser';
 import { CssColors } from './color';
 import type { Color, DebugDraw, ShapeStyle } from './debug-draw';
+import type { AnyBody } from './draw-source';
 
 /** An image drawn at a body's position and angle instead of (or over) its shapes. */
 export interface Sprite {
@@ -53,7 +53,7 @@ function imageReady(image: CanvasImageSource): boolean {
 export class CanvasDebugDraw implements DebugDraw {
   pixel = 1;
   /** a body's sprite and visibility, if styled (set by the Render) */
-  styleOf: ((body: Body) => { sprite?: Sprite; visible: boolean } | undefined) | null = null;
+  styleOf: ((body: AnyBody) => { sprite?: Sprite; visible: boolean } | undefined) | null = null;
   private readonly shapeBatches = new Map<string, ShapeBatch>();
   private readonly lineBatches = new Map<string, Path2D>();
   private readonly pointBatches = new Map<string, Path2D>();
@@ -76,7 +76,7 @@ export class CanvasDebugDraw implements DebugDraw {
     return batch;
   }
 
-  drawBody(body: Body, xf: Transform): boolean {
+  drawBody(body: AnyBody, xf: Transform): boolean {
     const style = this.styleOf?.(body);
     if (!style) return false;
     if (!style.visible) return true;

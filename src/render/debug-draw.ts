@@ -1,18 +1,16 @@
 /**
  * The debug-draw interface: the engine describes what it holds (shapes, AABBs, contacts, joints,
  * velocities, centres of mass) through a handful of callbacks, and any renderer draws them.
- * `drawWorld` walks a world through its public handles and reads the engine's columns read-only;
- * it never changes the world, so drawing can never affect the simulation.
+ * `drawWorld` walks a world through its drawing source (see draw-source.ts), read-only: drawing can
+ * never affect the simulation.
  */
-import type { Body } from '../api/body';
-import type { ShapeHandle } from '../api/shape';
-import type { World } from '../api/world';
+import type { Body, BodyType } from '../api/body';
 import { ShapeKind } from '../geometry/types';
-import type { MouseJoint } from '../joints/mouse-joint';
 import type { Transform, Vec2 } from '../math/vec2';
-import { BodyFlag, BodyKind, BodyState } from '../store/body-store';
-import { ContactFlag } from '../store/contact-store';
-import { ShapeFlag } from '../store/shape-store';
+import { BodyFlag } from '../store/body-store';
+import type { WorkerBody } from '../worker/handles';
+import type { AnyBody, AnyShape, AnyWorld, BodyRecord, DrawSource, ShapeRecord } from './draw-source';
+import { drawSourceOf, isWorkerWorld } from './source-of';
 
 /** A colour as 0xRRGGBB. */
 export type Color = number;
@@ -24,8 +22,8 @@ export interface ShapeStyle {
   fillAlpha: number;
   stroke: Color;
   /** the shape being drawn and its body, so a renderer can look up its own styles */
-  shape: ShapeHandle;
-  body: Body;
+  shape: AnyShape;
+  body: AnyBody;
 }
 
 /**
@@ -51,7 +49,7 @@ export interface DebugDraw {
    * Optional: called once per body before its shapes, with the transform it is drawn at.
    * Return true when the renderer drew the body itself (a sprite), and its shapes are skipped.
    */
-  drawBody?(body: Body, xf: Transform): boolean;
+  drawBody?(body: AnyBody, xf: Transform): boolean;
 }
 
 /** What `drawWorld` draws. */
@@ -87,9 +85,9 @@ export interface DrawWorldOptions {
    * The transform a body is drawn at (for example interpolated between the last two steps).
    * Fill `out` and return it. By default bodies are drawn where they are.
    */
-  transformOf?(body: Body, out: Transform): Transform;
+  transformOf?(body: AnyBody, out: Transform): Transform;
   /** A body's colour; undefined keeps the default palette. */
-  colorOf?(body: Body): Color | undefined;
+  colorOf?(body: AnyBody): Color | undefined;
 }
 
 export const colors = Object.freeze({
@@ -128,35 +126,43 @@ export function scaleColor(c: Color, f: number): Color {
 }
 
 /** The default colour of a body: by type, bullets apart, dynamic bodies from the palette. */
-export function defaultBodyColor(world: World, body: Body): Color {
+export function defaultBodyColor(world: AnyWorld, body: AnyBody): Color {
+  if (isWorkerWorld(world)) {
+    const handle = body as WorkerBody;
+    return recordColor(handle.kind, handle.bullet, handle.id);
+  }
   const bodies = world.core.bodies;
-  const b = body.slot;
-  const kind = bodies.kind[b];
-  if (kind === BodyKind.STATIC) return colors.static;
-  if (kind === BodyKind.KINEMATIC) return colors.kinematic;
-  if ((bodies.flags[b] & BodyFlag.BULLET) !== 0) return colors.bullet;
-  return dynamicPalette[b % dynamicPalette.length];
+  const b = (body as Body).slot;
+  return recordColor(TYPES[bodies.kind[b]], (bodies.flags[b] & BodyFlag.BULLET) !== 0, b);
+}
+
+/** body types by BodyKind */
+const TYPES = ['static', 'kinematic', 'dynamic'] as const;
+
+function recordColor(type: BodyType, bullet: boolean, index: number): Color {
+  if (type === 'static') return colors.static;
+  if (type === 'kinematic') return colors.kinematic;
+  if (bullet) return colors.bullet;
+  return dynamicPalette[index % dynamicPalette.length];
 }
 
 /** Fills `xf` with where a body is drawn. */
-function drawnTransform(world: World, body: Body, options: DrawWorldOptions | undefined, xf: Transform) {
-  if (options?.transformOf) return options.transformOf(body, xf);
-  const bodies = world.core.bodies;
-  const b = body.slot;
-  xf.p.x = bodies.px[b];
-  xf.p.y = bodies.py[b];
-  xf.q.c = bodies.qc[b];
-  xf.q.s = bodies.qs[b];
+function drawnTransform(body: BodyRecord, options: DrawWorldOptions | undefined, xf: Transform) {
+  if (options?.transformOf) return options.transformOf(body.handle, xf);
+  const t = body.transform;
+  xf.p.x = t.p.x;
+  xf.p.y = t.p.y;
+  xf.q.c = t.q.c;
+  xf.q.s = t.q.s;
   return xf;
 }
 
 /**
- * Maps a world point on body `b` (as the body is now) to where it is drawn: identical unless the
+ * Maps a world point on a body (as the body is now) to where it is drawn: identical unless the
  * renderer draws bodies elsewhere, as interpolation does (its transform is then written in `drawnXf`).
  */
 function mapPoint(
-  world: World,
-  body: Body,
+  body: BodyRecord,
   options: DrawWorldOptions | undefined,
   p: Vec2,
   out: Vec2,
@@ -167,70 +173,64 @@ function mapPoint(
     out.y = p.y;
     return out;
   }
-  const bodies = world.core.bodies;
-  const b = body.slot;
-  const c = bodies.qc[b];
-  const s = bodies.qs[b];
-  const dx = p.x - bodies.px[b];
-  const dy = p.y - bodies.py[b];
+  const { c, s } = body.transform.q;
+  const dx = p.x - body.transform.p.x;
+  const dy = p.y - body.transform.p.y;
   const lx = c * dx + s * dy;
   const ly = -s * dx + c * dy;
-  const xf = options.transformOf(body, drawnXf);
+  const xf = options.transformOf(body.handle, drawnXf);
   out.x = xf.q.c * lx - xf.q.s * ly + xf.p.x;
   out.y = xf.q.s * lx + xf.q.c * ly + xf.p.y;
   return out;
 }
 
-function drawShapes(world: World, draw: DebugDraw, flags: DebugDrawFlags, options?: DrawWorldOptions) {
-  const core = world.core;
-  const bodies = core.bodies;
-  const shapes = core.shapes;
+function drawShapes(source: DrawSource, draw: DebugDraw, flags: DebugDrawFlags, options?: DrawWorldOptions) {
   const xf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
   const style = { fill: 0, fillAlpha: 1, stroke: 0 } as ShapeStyle;
   const pA: Vec2 = { x: 0, y: 0 };
   const pB: Vec2 = { x: 0, y: 0 };
-  for (let b = 0; b < bodies.slotCount; b++) {
-    if (bodies.alive[b] === 0) continue;
-    const body = world.handles.bodies[b]!;
-    drawnTransform(world, body, options, xf);
-    if (draw.drawBody?.(body, xf)) continue;
-    let color = options?.colorOf?.(body) ?? defaultBodyColor(world, body);
-    const sleeping = bodies.kind[b] === BodyKind.DYNAMIC && (bodies.flags[b] & BodyFlag.AWAKE) === 0;
-    if (sleeping && flags.sleeping) color = mixColor(color, colors.sleepingTint, 0.6);
-    for (let s = bodies.shapeHead[b]; s !== -1; s = shapes.next[s]) {
-      const g = shapes.geometry[s]!;
-      const sensor = (shapes.flags[s] & ShapeFlag.SENSOR) !== 0;
-      style.body = body;
-      style.shape = world.handles.shapes[s]!;
-      if (sensor) {
-        style.fill = flags.wireframe ? null : colors.sensor;
-        style.fillAlpha = 0.18;
-        style.stroke = colors.sensor;
-      } else {
-        style.fill = flags.wireframe ? null : color;
-        style.fillAlpha = 1;
-        style.stroke = flags.wireframe ? color : scaleColor(color, 0.65);
-      }
-      switch (g.kind) {
-        case ShapeKind.CIRCLE:
-          draw.drawCircle(xf, g.center, g.radius, style);
-          break;
-        case ShapeKind.CAPSULE:
-          draw.drawCapsule(xf, g.center1, g.center2, g.radius, style);
-          break;
-        case ShapeKind.POLYGON:
-          draw.drawPolygon(xf, g.vertices, g.radius, style);
-          break;
-        case ShapeKind.SEGMENT: {
-          transformPoint(xf, g.point1, pA);
-          transformPoint(xf, g.point2, pB);
-          draw.drawLine(pA, pB, sensor ? colors.sensor : color);
-          if (g.oneSided) drawFrontTick(pA, pB, draw, sensor ? colors.sensor : color);
-          break;
-        }
+  let color = 0;
+  const drawShape = (shape: ShapeRecord): void => {
+    const g = shape.geometry;
+    const sensor = shape.sensor;
+    style.shape = shape.handle;
+    if (sensor) {
+      style.fill = flags.wireframe ? null : colors.sensor;
+      style.fillAlpha = 0.18;
+      style.stroke = colors.sensor;
+    } else {
+      style.fill = flags.wireframe ? null : color;
+      style.fillAlpha = 1;
+      style.stroke = flags.wireframe ? color : scaleColor(color, 0.65);
+    }
+    switch (g.kind) {
+      case ShapeKind.CIRCLE:
+        draw.drawCircle(xf, g.center, g.radius, style);
+        break;
+      case ShapeKind.CAPSULE:
+        draw.drawCapsule(xf, g.center1, g.center2, g.radius, style);
+        break;
+      case ShapeKind.POLYGON:
+        draw.drawPolygon(xf, g.vertices, g.radius, style);
+        break;
+      case ShapeKind.SEGMENT: {
+        transformPoint(xf, g.point1, pA);
+        transformPoint(xf, g.point2, pB);
+        draw.drawLine(pA, pB, sensor ? colors.sensor : color);
+        if (g.oneSided) drawFrontTick(pA, pB, draw, sensor ? colors.sensor : color);
+        break;
       }
     }
-  }
+  };
+  source.forEachBody((body) => {
+    drawnTransform(body, options, xf);
+    if (draw.drawBody?.(body.handle, xf)) return;
+    color = options?.colorOf?.(body.handle) ?? recordColor(body.type, body.bullet, body.index);
+    const sleeping = body.type === 'dynamic' && !body.awake;
+    if (sleeping && flags.sleeping) color = mixColor(color, colors.sleepingTint, 0.6);
+    style.body = body.handle;
+    source.forEachShape(body, drawShape);
+  });
 }
 
 /**
@@ -257,94 +257,71 @@ function transformPoint(xf: Transform, p: Vec2, out: Vec2): Vec2 {
   return out;
 }
 
-function drawAABBs(world: World, draw: DebugDraw) {
-  const core = world.core;
-  const shapes = core.shapes;
-  for (let s = 0; s < shapes.slotCount; s++) {
-    if (shapes.alive[s] === 0) continue;
-    draw.drawAABB(shapes.minX[s], shapes.minY[s], shapes.maxX[s], shapes.maxY[s], colors.aabb);
-  }
-}
-
-function drawContacts(world: World, draw: DebugDraw, flags: DebugDrawFlags, options?: DrawWorldOptions) {
-  const core = world.core;
-  const contacts = core.contacts;
-  const normalLength = 0.3;
-  const drawnXf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
-  const pA: Vec2 = { x: 0, y: 0 };
-  const pB: Vec2 = { x: 0, y: 0 };
-  const pC: Vec2 = { x: 0, y: 0 };
-  for (let c = 0; c < contacts.slotCount; c++) {
-    if (contacts.alive[c] === 0) continue;
-    const f = contacts.flags[c];
-    if ((f & ContactFlag.TOUCHING) === 0 || (f & ContactFlag.SENSOR) !== 0) continue;
-    const bodyA = world.handles.bodies[contacts.bodyA[c]]!;
-    const n = contacts.pointCount[c];
-    for (let i = 0; i < n; i++) {
-      const k = c * 2 + i;
-      pA.x = contacts.pointX[k];
-      pA.y = contacts.pointY[k];
-      mapPoint(world, bodyA, options, pA, pC, drawnXf);
-      if (flags.contacts) {
-        draw.drawPoint(pC, 5, contacts.separation[k] > 0 ? colors.speculativePoint : colors.contactPoint);
-      }
-      if (flags.contactNormals) {
-        pB.x = pC.x + contacts.normalX[c] * normalLength;
-        pB.y = pC.y + contacts.normalY[c] * normalLength;
-        draw.drawLine(pC, pB, colors.contactNormal);
-      }
-    }
-  }
-}
-
-function drawVelocitiesAndCenters(
-  world: World,
+function drawContacts(
+  source: DrawSource,
   draw: DebugDraw,
   flags: DebugDrawFlags,
   options?: DrawWorldOptions,
 ) {
-  const core = world.core;
-  const bodies = core.bodies;
+  const normalLength = 0.3;
+  const drawnXf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
+  const pB: Vec2 = { x: 0, y: 0 };
+  const pC: Vec2 = { x: 0, y: 0 };
+  source.forEachContactPoint?.((contact) => {
+    mapPoint(contact.body, options, contact.point, pC, drawnXf);
+    if (flags.contacts) {
+      draw.drawPoint(pC, 5, contact.separation > 0 ? colors.speculativePoint : colors.contactPoint);
+    }
+    if (flags.contactNormals) {
+      pB.x = pC.x + contact.normal.x * normalLength;
+      pB.y = pC.y + contact.normal.y * normalLength;
+      draw.drawLine(pC, pB, colors.contactNormal);
+    }
+  });
+}
+
+function drawVelocitiesAndCenters(
+  source: DrawSource,
+  draw: DebugDraw,
+  flags: DebugDrawFlags,
+  options?: DrawWorldOptions,
+) {
   const xf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
   const center: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
   const tip: Vec2 = { x: 0, y: 0 };
-  for (let b = 0; b < bodies.slotCount; b++) {
-    if (bodies.alive[b] === 0 || bodies.kind[b] === BodyKind.STATIC) continue;
-    const body = world.handles.bodies[b]!;
-    drawnTransform(world, body, options, xf);
-    transformPoint(xf, { x: bodies.lcx[b], y: bodies.lcy[b] }, center.p);
+  source.forEachBody((body) => {
+    if (body.type === 'static') return;
+    const motion = source.motion(body);
+    drawnTransform(body, options, xf);
+    transformPoint(xf, motion.localCenter, center.p);
     center.q.c = xf.q.c;
     center.q.s = xf.q.s;
     if (flags.centersOfMass) draw.drawTransform(center);
     if (flags.velocities) {
-      const st = b * BodyState.STRIDE;
-      const vx = bodies.state[st + BodyState.VX];
-      const vy = bodies.state[st + BodyState.VY];
       // a tenth of a second of travel
-      tip.x = center.p.x + vx * 0.1;
-      tip.y = center.p.y + vy * 0.1;
+      tip.x = center.p.x + motion.linearVelocity.x * 0.1;
+      tip.y = center.p.y + motion.linearVelocity.y * 0.1;
       draw.drawLine(center.p, tip, colors.velocity);
     }
-  }
+  });
 }
 
-function drawJoints(world: World, draw: DebugDraw, options?: DrawWorldOptions) {
+function drawJoints(source: DrawSource, draw: DebugDraw, options?: DrawWorldOptions) {
   const drawnXf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
-  for (const joint of world.joints) {
+  source.forEachJoint((joint) => {
     const bodyA = joint.bodyA;
     const bodyB = joint.bodyB;
-    const a = mapPoint(world, bodyA, options, joint.anchorA, { x: 0, y: 0 }, drawnXf);
-    const b = mapPoint(world, bodyB, options, joint.anchorB, { x: 0, y: 0 }, drawnXf);
-    if (joint.type === 'mouse') {
-      // by type, not instanceof: the render entry may be a separate bundle (CommonJS)
-      const target = (joint as MouseJoint).target;
+    const a = mapPoint(bodyA, options, joint.anchorA, { x: 0, y: 0 }, drawnXf);
+    const b = mapPoint(bodyB, options, joint.anchorB, { x: 0, y: 0 }, drawnXf);
+    if (joint.target !== null) {
+      const target = joint.target;
       draw.drawLine(target, b, colors.mouse);
       draw.drawPoint(target, 6, colors.mouse);
       draw.drawPoint(b, 5, colors.mouse);
-      continue;
+      return;
     }
-    const xfA = drawnTransform(world, bodyA, options, { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } });
-    const xfB = drawnTransform(world, bodyB, options, { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } });
+    const xfA = drawnTransform(bodyA, options, { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } });
+    const xfB = drawnTransform(bodyB, options, { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } });
     if (joint.type === 'distance') {
       draw.drawLine(a, b, colors.joint);
     } else {
@@ -355,22 +332,25 @@ function drawJoints(world: World, draw: DebugDraw, options?: DrawWorldOptions) {
     }
     draw.drawPoint(a, 5, colors.jointAnchor);
     draw.drawPoint(b, 5, colors.jointAnchor);
-  }
+  });
 }
 
 /**
  * Draws a world through `draw`: shapes first, then AABBs, joints, contacts, velocities and centres
- * of mass, as `flags` ask. Reads the world and never changes it.
+ * of mass, as `flags` ask. `world` is a World, a WorkerWorld (no AABBs or contacts: its worker keeps
+ * them) or any drawing source. Reads the world and never changes it.
  */
 export function drawWorld(
-  world: World,
+  world: AnyWorld | DrawSource,
   draw: DebugDraw,
   flags: DebugDrawFlags = defaultDebugDrawFlags,
   options?: DrawWorldOptions,
 ): void {
-  if (flags.shapes) drawShapes(world, draw, flags, options);
-  if (flags.aabbs) drawAABBs(world, draw);
-  if (flags.joints) drawJoints(world, draw, options);
-  if (flags.contacts || flags.contactNormals) drawContacts(world, draw, flags, options);
-  if (flags.velocities || flags.centersOfMass) drawVelocitiesAndCenters(world, draw, flags, options);
+  const source = 'forEachBody' in world ? world : drawSourceOf(world);
+  if (flags.shapes) drawShapes(source, draw, flags, options);
+  if (flags.aabbs)
+    source.forEachAABB?.((minX, minY, maxX, maxY) => draw.drawAABB(minX, minY, maxX, maxY, colors.aabb));
+  if (flags.joints) drawJoints(source, draw, options);
+  if (flags.contacts || flags.contactNormals) drawContacts(source, draw, flags, options);
+  if (flags.velocities || flags.centersOfMass) drawVelocitiesAndCenters(source, draw, flags, options);
 }

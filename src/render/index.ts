@@ -21,8 +21,20 @@ export {
   type ShapeStyle,
   scaleColor,
 } from './debug-draw';
+export type {
+  AnyBody,
+  AnyShape,
+  AnyWorld,
+  BodyRecord,
+  ContactPointRecord,
+  DrawSource,
+  JointRecord,
+  MotionRecord,
+  ShapeRecord,
+} from './draw-source';
 export { Interpolator } from './interpolation';
 export {
+  type BodyOf,
   type DragEvent,
   Pointer,
   type PointerEventInfo,
@@ -38,3 +50,4 @@ export {
   type RenderOptions,
 } from './render';
 export { type FrameEvent, Runner, type RunnerEvents, type RunnerOptions, type StepEvent } from './runner';
+export { drawSourceOf, isWorkerWorld } from './source-of';

@@ -1,7 +1,8 @@
-import type { Body } from '../api/body';
 import type { World } from '../api/world';
 import { blendTransform } from '../math/blend';
 import type { Transform } from '../math/vec2';
+import type { WorkerBody } from '../worker/handles';
+import type { AnyBody } from './draw-source';
 
 function grow(a: Float64Array<ArrayBuffer>, n: number): Float64Array<ArrayBuffer> {
   if (a.length >= n) return a;
@@ -11,7 +12,7 @@ function grow(a: Float64Array<ArrayBuffer>, n: number): Float64Array<ArrayBuffer
 /**
  * Keeps the body transforms of the state before the last step, so that drawing can blend the last
  * two states: `alpha` = 0 shows the previous state, 1 the current one. Output only: nothing here
- * feeds the step.
+ * feeds the step. A worker world's bodies need no capture: its worker publishes both states.
  */
 export class Interpolator {
   /** blend factor in [0, 1] between the previous state and the current one */
@@ -50,7 +51,8 @@ export class Interpolator {
   }
 
   /** The transform to draw `body` at: blended when the previous state knows it, current otherwise. */
-  transformOf(body: Body, out: Transform): Transform {
+  transformOf(body: AnyBody, out: Transform): Transform {
+    if (!('slot' in body)) return this.workerTransformOf(body, out);
     const bodies = body.world.core.bodies;
     const b = body.slot;
     const cx = bodies.px[b];
@@ -66,5 +68,10 @@ export class Interpolator {
       return out;
     }
     return blendTransform(this.px[b], this.py[b], this.qc[b], this.qs[b], cx, cy, cc, cs, t, out);
+  }
+
+  /** A worker body's pose `alpha` of the way through the last step its worker finished. */
+  private workerTransformOf(body: WorkerBody, out: Transform): Transform {
+    return this.alpha >= 1 ? body.readPose(out) : body.getInterpolatedTransform(Math.max(0, this.alpha), out);
   }
 }

@@ -2,17 +2,28 @@ import type { Body } from '../api/body';
 import type { World } from '../api/world';
 import { Emitter } from '../core/emitter';
 import { Limits } from '../core/limits';
+import { testPoint } from '../geometry/raycast';
 import type { MouseJoint } from '../joints/mouse-joint';
-import type { Vec2 } from '../math/vec2';
+import type { Transform, Vec2 } from '../math/vec2';
+import type { WorkerBody, WorkerJoint } from '../worker/handles';
+import type { WorkerWorld } from '../worker/worker-world';
+import type { AnyWorld } from './draw-source';
 import { clientToCanvas, type Render } from './render';
+import { isWorkerWorld } from './source-of';
 
-export interface PointerOptions {
-  render: Render;
+/** The body handle of a world type: a World's Body, a WorkerWorld's WorkerBody. */
+export type BodyOf<W extends AnyWorld> = W extends WorkerWorld ? WorkerBody : Body;
+
+export interface PointerOptions<W extends AnyWorld = World> {
+  render: Render<W>;
   /** the world to drag in; default: the render's world */
-  world?: () => World | null;
+  world?: () => W | null;
   /** which bodies may be dragged (default: every dynamic body) */
-  filter?: (body: Body) => boolean;
-  /** drag force limit per kilogram of the dragged body, N/kg (default 1000) */
+  filter?: (body: BodyOf<W>) => boolean;
+  /**
+   * drag force limit per kilogram of the dragged body, N/kg (default 1000); a worker world's drag
+   * takes the mouse joint's default, 1000 N/kg (its bodies' masses are known in the worker only)
+   */
   forcePerMass?: number;
   /** stiffness of the drag spring, Hz (default 5) */
   hertz?: number;
@@ -23,8 +34,8 @@ export interface PointerOptions {
   zoom?: boolean;
 }
 
-export interface DragEvent {
-  body: Body;
+export interface DragEvent<W extends AnyWorld = World> {
+  body: BodyOf<W>;
   /** world point under the pointer */
   point: Vec2;
 }
@@ -40,10 +51,10 @@ export interface PointerEventInfo {
   handled: boolean;
 }
 
-export interface PointerEvents {
-  dragStart: DragEvent;
-  dragMove: DragEvent;
-  dragEnd: DragEvent;
+export interface PointerEvents<W extends AnyWorld = World> {
+  dragStart: DragEvent<W>;
+  dragMove: DragEvent<W>;
+  dragEnd: DragEvent<W>;
   down: PointerEventInfo;
   move: PointerEventInfo;
   up: PointerEventInfo;
@@ -52,33 +63,35 @@ export interface PointerEvents {
 /**
  * Mouse, pen and touch on a Render's canvas: drag dynamic bodies through a mouse joint, pan on empty
  * space, zoom with the wheel or a pinch. Pointer positions go through getBoundingClientRect, so they
- * stay right when the page is scrolled, zoomed or the canvas is scaled by CSS.
+ * stay right when the page is scrolled, zoomed or the canvas is scaled by CSS. A worker world's
+ * bodies are picked from the shapes and poses known on this thread and dragged by a mouse joint whose
+ * target moves by command, applied at the worker's next step.
  */
-export class Pointer {
-  readonly render: Render;
+export class Pointer<W extends AnyWorld = World> {
+  readonly render: Render<W>;
   enabled = true;
-  filter: (body: Body) => boolean;
+  filter: (body: BodyOf<W>) => boolean;
   forcePerMass: number;
   hertz: number;
   dampingRatio: number;
   pan: boolean;
   zoom: boolean;
   /** the body being dragged, if any */
-  body: Body | null = null;
+  body: BodyOf<W> | null = null;
   /** world point of the primary pointer, last seen */
   point: Vec2 | null = null;
-  private joint: MouseJoint | null = null;
-  private jointWorld: World | null = null;
+  private joint: MouseJoint | WorkerJoint | null = null;
+  private jointWorld: W | null = null;
   private dragPointer: number | null = null;
   private panPointer: number | null = null;
   private lastScreen: Vec2 = { x: 0, y: 0 };
   private readonly touches = new Map<number, Vec2>();
   private pinchDistance = 0;
-  private readonly emitter = new Emitter<PointerEvents>();
-  private readonly getWorld: () => World | null;
+  private readonly emitter = new Emitter<PointerEvents<W>>();
+  private readonly getWorld: () => W | null;
   private readonly listeners: [string, EventListener, AddEventListenerOptions?][] = [];
 
-  constructor(options: PointerOptions) {
+  constructor(options: PointerOptions<W>) {
     this.render = options.render;
     this.getWorld = options.world ?? (() => this.render.world);
     this.filter = options.filter ?? ((body) => body.type === 'dynamic');
@@ -97,7 +110,7 @@ export class Pointer {
     this.listen('contextmenu', (e) => e.preventDefault());
   }
 
-  on<K extends keyof PointerEvents>(event: K, handler: (e: PointerEvents[K]) => void): () => void {
+  on<K extends keyof PointerEvents<W>>(event: K, handler: (e: PointerEvents<W>[K]) => void): () => void {
     return this.emitter.on(event, handler);
   }
 
@@ -118,15 +131,34 @@ export class Pointer {
   }
 
   /** The draggable body under a world point (the last created wins), or null. */
-  pick(point: Vec2): Body | null {
+  pick(point: Vec2): BodyOf<W> | null {
     const world = this.getWorld();
     if (!world) return null;
+    if (isWorkerWorld(world)) return this.pickWorker(world, point) as BodyOf<W> | null;
     let found: Body | null = null;
     for (const body of world.bodies) {
-      if (!this.filter(body)) continue;
+      if (!this.filter(body as BodyOf<W>)) continue;
       for (const shape of body.shapes) {
         if (shape.isSensor) continue;
         if (shape.testPoint(point)) {
+          found = body;
+          break;
+        }
+      }
+    }
+    return found as BodyOf<W> | null;
+  }
+
+  /** pick in a worker world: its shapes at the poses its worker published last */
+  private pickWorker(world: WorkerWorld, point: Vec2): WorkerBody | null {
+    const xf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };
+    let found: WorkerBody | null = null;
+    for (const body of world.bodies) {
+      if (!this.filter(body as BodyOf<W>)) continue;
+      body.readPose(xf);
+      for (const shape of body.shapeList) {
+        if (shape.isSensor) continue;
+        if (testPoint(shape.geometry, xf, point.x, point.y)) {
           found = body;
           break;
         }
@@ -179,21 +211,31 @@ export class Pointer {
   }
 
   /** Starts dragging `body` from world point `point`; false when it is not in the current world. */
-  startDrag(body: Body, point: Vec2): boolean {
+  startDrag(body: BodyOf<W>, point: Vec2): boolean {
     const world = this.getWorld();
     if (!world || body.world !== world || !body.isValid) return false;
     this.endDrag();
-    const gravity = world.gravity;
-    const g = Math.max(1, Math.sqrt(gravity.x * gravity.x + gravity.y * gravity.y));
-    this.joint = world.createJoint({
-      type: 'mouse',
-      body,
-      target: point,
-      // held to the accepted range: a heavy body under strong gravity would ask for more
-      maxForce: Math.min(Limits.FORCE, this.forcePerMass * body.mass * (g / 10)),
-      hertz: this.hertz,
-      dampingRatio: this.dampingRatio,
-    });
+    if (isWorkerWorld(world)) {
+      this.joint = world.createJoint({
+        type: 'mouse',
+        body: body as WorkerBody,
+        target: point,
+        hertz: this.hertz,
+        dampingRatio: this.dampingRatio,
+      });
+    } else {
+      const gravity = world.gravity;
+      const g = Math.max(1, Math.sqrt(gravity.x * gravity.x + gravity.y * gravity.y));
+      this.joint = world.createJoint({
+        type: 'mouse',
+        body: body as Body,
+        target: point,
+        // held to the accepted range: a heavy body under strong gravity would ask for more
+        maxForce: Math.min(Limits.FORCE, this.forcePerMass * (body as Body).mass * (g / 10)),
+        hertz: this.hertz,
+        dampingRatio: this.dampingRatio,
+      });
+    }
     this.jointWorld = world;
     body.setAwake(true);
     this.body = body;
@@ -212,7 +254,10 @@ export class Pointer {
     this.dragPointer = null;
     if (!body || !joint || !world) return;
     // the body (and with it the joint) may have been destroyed, or the world swapped, meanwhile
-    if (joint.isValid && world === this.getWorld()) world.destroyJoint(joint);
+    if (joint.isValid && world === this.getWorld()) {
+      if (isWorkerWorld(world)) world.destroyJoint(joint as WorkerJoint);
+      else (world as World).destroyJoint(joint as MouseJoint);
+    }
     this.emitter.emit('dragEnd', { body, point: this.point ?? body.position });
   }
 

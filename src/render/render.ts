@@ -1,4 +1,3 @@
-import type { Body } from '../api/body';
 import type { World } from '../api/world';
 import { Emitter } from '../core/emitter';
 import { FulcrumError } from '../core/errors';
@@ -13,6 +12,7 @@ import {
   defaultDebugDrawFlags,
   drawWorld,
 } from './debug-draw';
+import type { AnyBody, AnyWorld } from './draw-source';
 import type { Interpolator } from './interpolation';
 
 /** How one body looks; anything left out keeps the default. */
@@ -24,11 +24,12 @@ export interface BodyStyle {
   visible?: boolean;
 }
 
-export interface RenderOptions {
+export interface RenderOptions<W extends AnyWorld = World> {
   /** the canvas to draw on; without one a canvas is created inside `element` */
   canvas?: HTMLCanvasElement;
   element?: HTMLElement;
-  world?: World | null;
+  /** a World, or a WorkerWorld (drawn from the state its worker publishes) */
+  world?: W | null;
   /** CSS background colour */
   background?: string;
   flags?: Partial<DebugDrawFlags>;
@@ -38,7 +39,7 @@ export interface RenderOptions {
 }
 
 export interface DrawEvent {
-  render: Render;
+  render: Render<AnyWorld>;
   context: CanvasRenderingContext2D;
   /**
    * 'afterDraw': the context maps world metres (y up) and `pixel` is one CSS pixel in metres;
@@ -63,22 +64,23 @@ function parseColor(color: Color | string): Color | undefined {
  * Draws a world on a 2D canvas through the DebugDraw interface: shapes (filled or wireframe), AABBs,
  * contacts, joints, velocities, centres of mass, sleeping bodies tinted, per-body colours and sprites.
  * The canvas follows its CSS size at the device pixel ratio (HiDPI); the camera pans and zooms.
+ * It draws a World on this thread or a WorkerWorld alike, through their drawing sources.
  */
-export class Render {
+export class Render<W extends AnyWorld = World> {
   readonly canvas: HTMLCanvasElement;
   readonly context: CanvasRenderingContext2D;
   readonly camera: Camera;
   flags: DebugDrawFlags;
-  world: World | null;
+  world: W | null;
   background: string;
   /** device pixels per CSS pixel; null follows window.devicePixelRatio */
   pixelRatio: number | null;
   private readonly emitter = new Emitter<RenderEvents>();
   private readonly debugDraw: CanvasDebugDraw;
-  private readonly styles = new WeakMap<Body, { color?: Color; sprite?: Sprite; visible: boolean }>();
+  private readonly styles = new WeakMap<AnyBody, { color?: Color; sprite?: Sprite; visible: boolean }>();
   private readonly ownsCanvas: boolean;
 
-  constructor(options: RenderOptions = {}) {
+  constructor(options: RenderOptions<W> = {}) {
     requireBrowser('new Render()', 'Path2D');
     if (options.canvas) {
       if (typeof options.canvas.getContext !== 'function') {
@@ -115,7 +117,7 @@ export class Render {
   }
 
   /** Sets (or with null clears) how a body looks. */
-  setBodyStyle(body: Body, style: BodyStyle | null): void {
+  setBodyStyle(body: AnyBody, style: BodyStyle | null): void {
     if (style === null) {
       this.styles.delete(body);
       return;
@@ -124,7 +126,7 @@ export class Render {
     this.styles.set(body, { color, sprite: style.sprite, visible: style.visible ?? true });
   }
 
-  getBodyStyle(body: Body): BodyStyle | undefined {
+  getBodyStyle(body: AnyBody): BodyStyle | undefined {
     return this.styles.get(body);
   }
 
@@ -189,7 +191,8 @@ export class Render {
   }
 
   /**
-   * Draws the world. With an interpolator, bodies are drawn between their last two states.
+   * Draws the world. With an interpolator, bodies are drawn between their last two states (a worker
+   * world's: the two its worker published last).
    */
   draw(interpolator?: Interpolator | null): void {
     this.resize();

@@ -41,6 +41,8 @@ export class WorkerBody {
   readonly shapeList: WorkerShape[] = [];
   /** @internal in creation order */
   readonly jointList: WorkerJoint[] = [];
+  /** @internal as created (drawn in the bullet colour) */
+  bullet: boolean;
   /** the row it reads until a step reports it: the pose and velocities it was created with */
   readonly #initial = new Float64Array(Row.STRIDE);
 
@@ -58,6 +60,7 @@ export class WorkerBody {
     this.generation = generation;
     this.kind = type;
     this.userData = userData;
+    this.bullet = def?.bullet ?? false;
     if (def === null) return;
     // as World.createBody leaves it (the centre of mass is the origin until the worker knows the shapes)
     const row = this.#initial;
@@ -125,6 +128,15 @@ export class WorkerBody {
 
   get isAwake(): boolean {
     return this.#read(Row.AWAKE) !== 0;
+  }
+
+  /** @internal fills `out` with the pose after the last step, as the engine keeps it (for drawing) */
+  readPose(out: Transform): Transform {
+    out.p.x = this.#read(Row.PX);
+    out.p.y = this.#read(Row.PY);
+    out.q.c = this.#read(Row.QC);
+    out.q.s = this.#read(Row.QS);
+    return out;
   }
 
   /**
@@ -244,8 +256,9 @@ export class WorkerBody {
     this.check();
     const checked = checkShapes(BODY_KINDS[this.kind], geometry, def, this.world.shapeCount);
     const userData = def?.userData;
+    const sensor = def?.isSensor === true;
     const parts = checked.parts ?? [checked.geometry!];
-    const shapes = parts.map((part) => this.world.addShape(this, part, userData));
+    const shapes = parts.map((part) => this.world.addShape(this, part, sensor, userData));
     this.world.queue([
       'createShape',
       this.id,
@@ -272,15 +285,18 @@ export class WorkerShape {
   readonly id: number;
   /** the shape's geometry in its body's frame (a concave shape's piece, a chain's segment) */
   readonly geometry: Geometry;
+  /** a sensor detects overlaps and never collides (as made: WorkerShape has no setter yet) */
+  readonly isSensor: boolean;
   userData: unknown;
   /** @internal */
   destroyed = false;
 
   /** @internal */
-  constructor(body: WorkerBody, id: number, geometry: Geometry, userData: unknown) {
+  constructor(body: WorkerBody, id: number, geometry: Geometry, isSensor: boolean, userData: unknown) {
     this.body = body;
     this.id = id;
     this.geometry = geometry;
+    this.isSensor = isSensor;
     this.userData = userData;
   }
 
@@ -310,6 +326,13 @@ export class WorkerJoint {
   userData: unknown;
   /** @internal */
   destroyed = false;
+  /**
+   * @internal the anchors in the bodies' frames (A x, y, B x, y), as the worker made them (defaults
+   * may depend on where the bodies were): null until the reply to the batch that made the joint
+   */
+  localAnchors: Float64Array | null = null;
+  /** a mouse joint's target as the commands given so far leave it (null for other joints) */
+  #target: Vec2 | null;
 
   /** @internal */
   constructor(
@@ -318,6 +341,7 @@ export class WorkerJoint {
     type: JointType,
     bodyA: WorkerBody,
     bodyB: WorkerBody,
+    target: Vec2 | null,
     userData: unknown,
   ) {
     this.world = world;
@@ -325,7 +349,23 @@ export class WorkerJoint {
     this.type = type;
     this.bodyA = bodyA;
     this.bodyB = bodyB;
+    this.#target = target === null ? null : { x: target.x, y: target.y };
     this.userData = userData;
+  }
+
+  /** A mouse joint's target (world point); null for other joints, and for a restored world's mouse joint. */
+  get target(): Vec2 | null {
+    this.check();
+    return this.#target === null ? null : { x: this.#target.x, y: this.#target.y };
+  }
+
+  /** Moves a mouse joint's target and wakes its body, at the next step (see MouseJoint.setTarget). */
+  setTarget(target: Vec2): void {
+    this.check();
+    if (this.type !== 'mouse') throw new FulcrumError(`setTarget: a ${this.type} joint has no target`);
+    const t = checkCoordinates('target', target);
+    this.world.queue(['joint', this.id, 'setTarget', [t]]);
+    this.#target = t;
   }
 
   /** @internal */

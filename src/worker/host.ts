@@ -4,6 +4,7 @@ import { stateHash } from '../api/state-hash';
 import { World, type WorldDef } from '../api/world';
 import { FulcrumError } from '../core/errors';
 import type { Joint } from '../joints/joint';
+import type { MouseJoint } from '../joints/mouse-joint';
 import type { JointDef } from '../joints/registry';
 import type { CastHit } from '../query/index';
 import { BodyFlag, BodyState } from '../store/body-store';
@@ -48,6 +49,8 @@ export class WorldHost {
   readonly #bodyIds = new WeakMap<Body, number>();
   readonly #shapeIds = new WeakMap<ShapeHandle, number>();
   readonly #jointIds = new WeakMap<Joint, number>();
+  /** the joints the current batch made, with their ids, whose anchors go into its reply */
+  #madeJoints: number[] = [];
 
   /**
    * Applies a batch's commands in order, then answers its request. A command the World refuses with a
@@ -76,7 +79,21 @@ export class WorldHost {
       refused(e);
     }
     if (error !== undefined) reply.error = error;
+    if (this.#madeJoints.length > 0) reply.anchors = this.#anchors();
     return { reply, transfer };
+  }
+
+  /** The anchors of the joints made since the last reply (see Reply.anchors). */
+  #anchors(): number[] {
+    const out: number[] = [];
+    for (const id of this.#madeJoints) {
+      const joint = this.#joints[id];
+      // made and destroyed in the same batch: the calling thread has dropped it too
+      if (joint === undefined) continue;
+      out.push(id, joint.localAnchorAx, joint.localAnchorAy, joint.localAnchorBx, joint.localAnchorBy);
+    }
+    this.#madeJoints = [];
+    return out;
   }
 
   #answer(request: Request, reply: Reply, transfer: Transferable[]): void {
@@ -93,7 +110,9 @@ export class WorldHost {
         const world = this.#live();
         const buffer = this.#fit(request.buffer);
         this.#writePoses(new Float64Array(buffer), Row.PREV_PX);
+        const start = performance.now();
         world.step(request.dt);
+        reply.stepMs = performance.now() - start;
         this.#publish(buffer, reply, transfer, true);
         if (request.events.length > 0) reply.events = this.#events(request.events);
         return;
@@ -174,6 +193,7 @@ export class WorldHost {
         const joint = world.createJoint(def as unknown as JointDef);
         this.#joints[id] = joint;
         this.#jointIds.set(joint, id);
+        this.#madeJoints.push(id);
         return;
       }
       case 'destroyJoint': {
@@ -189,6 +209,13 @@ export class WorldHost {
         (body[method] as (...a: unknown[]) => void).apply(body, args);
         return;
       }
+      case 'joint': {
+        const [, id, , args] = command;
+        const joint = this.#joints[id];
+        if (joint === undefined) throw new FulcrumError('joint has been destroyed');
+        (joint as MouseJoint).setTarget(args[0] as { x: number; y: number });
+        return;
+      }
       case 'gravity':
         world.gravity = command[1];
         return;
@@ -199,23 +226,38 @@ export class WorldHost {
   #restore(bytes: Uint8Array, reply: Reply): void {
     const world = World.restore(bytes);
     this.#world = world;
-    const restored: RestoredHandles = { gravity: world.gravity, bodies: [], shapes: [], joints: [] };
+    const restored: RestoredHandles = {
+      gravity: world.gravity,
+      bodies: [],
+      shapes: [],
+      joints: [],
+      bullets: [],
+    };
     for (const body of world.bodies) {
       const id = restored.bodies.length;
       this.#bodies[id] = body;
       this.#generations[id] = 1;
       this.#bodyIds.set(body, id);
       restored.bodies.push(body.type);
+      restored.bullets.push(body.bullet);
       for (const shape of body.shapes) {
         this.#shapes[restored.shapes.length] = shape;
         this.#shapeIds.set(shape, restored.shapes.length);
-        restored.shapes.push([id, shape.geometry as unknown as Plain]);
+        restored.shapes.push([id, shape.geometry as unknown as Plain, shape.isSensor]);
       }
     }
     for (const joint of world.joints) {
-      this.#joints[restored.joints.length] = joint;
-      this.#jointIds.set(joint, restored.joints.length);
-      restored.joints.push([joint.type, this.#bodyIds.get(joint.bodyA)!, this.#bodyIds.get(joint.bodyB)!]);
+      const id = restored.joints.length;
+      this.#joints[id] = joint;
+      this.#jointIds.set(joint, id);
+      this.#madeJoints.push(id);
+      const target = joint.type === 'mouse' ? (joint as MouseJoint).target : null;
+      restored.joints.push([
+        joint.type,
+        this.#bodyIds.get(joint.bodyA)!,
+        this.#bodyIds.get(joint.bodyB)!,
+        target,
+      ]);
     }
     reply.restored = restored;
   }

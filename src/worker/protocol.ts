@@ -46,6 +46,8 @@ export type Command =
   | ['createJoint', number, PlainDef]
   | ['destroyJoint', number]
   | ['body', number, BodyCommand, Plain[]]
+  /** joint id, a joint method (a mouse joint's setTarget), its checked arguments */
+  | ['joint', number, 'setTarget', Plain[]]
   | ['gravity', { x: number; y: number }];
 
 /** The world's queries that a WorkerWorld forwards. */
@@ -118,10 +120,12 @@ export interface RestoredHandles {
   gravity: { x: number; y: number };
   /** each body's type */
   bodies: BodyType[];
-  /** each shape's body id and geometry */
-  shapes: [number, Plain][];
-  /** each joint's type and body ids */
-  joints: [JointType, number, number][];
+  /** each shape's body id, geometry and whether it is a sensor */
+  shapes: [number, Plain, boolean][];
+  /** each joint's type, body ids, and a mouse joint's target (null for other joints) */
+  joints: [JointType, number, number, { x: number; y: number } | null][];
+  /** each body's bullet flag */
+  bullets: boolean[];
 }
 
 export interface Reply {
@@ -134,7 +138,16 @@ export interface Reply {
   /** a query's answer, a snapshot's bytes or a hash */
   result?: unknown;
   restored?: RestoredHandles;
+  /**
+   * the joints this batch made (or a restored world's): per joint its id and its anchors in the
+   * bodies' frames (A x, y, B x, y), stride JOINT_ANCHORS_STRIDE, for drawing
+   */
+  anchors?: number[];
+  /** a step's duration in the worker, milliseconds (output only) */
+  stepMs?: number;
 }
+
+export const JOINT_ANCHORS_STRIDE = 5;
 
 /**
  * The state buffer: a Float64Array with one row per body id, written by the worker after each step.

@@ -19,6 +19,7 @@ import {
   type Command,
   EVENT_ORDER,
   type EventKind,
+  JOINT_ANCHORS_STRIDE,
   type Plain,
   type PlainDef,
   type QueryName,
@@ -159,6 +160,8 @@ export class WorkerWorld {
   #shapeCount = 0;
   #jointCount = 0;
   #gravity: Vec2;
+  #stepCount = 0;
+  #stepMs = 0;
   readonly #handlers = new Emitter<WorkerWorldEventMap>();
 
   private constructor(scratch: World, shared: boolean) {
@@ -261,6 +264,21 @@ export class WorkerWorld {
     return this.#view;
   }
 
+  /** @internal every body handle by id, destroyed ones and empty ids included (for drawing) */
+  get bodyList(): readonly (WorkerBody | undefined)[] {
+    return this.#bodies;
+  }
+
+  /** Steps the worker has finished (whose promise has resolved or is about to). */
+  get stepCount(): number {
+    return this.#stepCount;
+  }
+
+  /** How long the worker's last step took, in milliseconds (measured in the worker; output only). */
+  get lastStepMs(): number {
+    return this.#stepMs;
+  }
+
   #usable(): void {
     if (this.#failure !== null) throw this.#failure;
   }
@@ -333,9 +351,9 @@ export class WorkerWorld {
   }
 
   /** @internal a new shape handle of `body` (WorkerBody.createShape has checked it) */
-  addShape(body: WorkerBody, geometry: Geometry, userData: unknown): WorkerShape {
+  addShape(body: WorkerBody, geometry: Geometry, sensor: boolean, userData: unknown): WorkerShape {
     const id = this.#allocate('shapes');
-    const shape = new WorkerShape(body, id, geometry, userData);
+    const shape = new WorkerShape(body, id, geometry, sensor, userData);
     this.#shapes[id] = shape;
     body.shapeList.push(shape);
     this.#shapeCount++;
@@ -367,7 +385,8 @@ export class WorkerWorld {
     const sent: Record<string, unknown> = { ...d };
     for (const key of BODY_KEYS) if (key in sent) sent[key] = (sent[key] as WorkerBody).id;
     const id = this.#allocate('joints');
-    const joint = new WorkerJoint(this, id, type, bodyA, bodyB, d.userData);
+    const target = type === 'mouse' ? (d.target as Vec2) : null;
+    const joint = new WorkerJoint(this, id, type, bodyA, bodyB, target, d.userData);
     this.#joints[id] = joint;
     bodyA.jointList.push(joint);
     if (bodyB !== bodyA) bodyB.jointList.push(joint);
@@ -448,6 +467,8 @@ export class WorkerWorld {
     const events = EVENT_ORDER.filter((kind) => handlers.has(kind)) as EventKind[];
     return this.#request({ kind: 'step', dt, buffer: this.#buffer(), events }, (reply) => {
       this.#adopt(reply);
+      this.#stepCount++;
+      this.#stepMs = reply.stepMs ?? 0;
       if (reply.events !== undefined) this.#deliver(reply);
       if (handlers.has('postStep')) handlers.emit('postStep', { dt });
     });
@@ -598,6 +619,17 @@ export class WorkerWorld {
     this.#release(reply.seq);
     this.#port?.hold(this.#waiting.length > 0);
     waiting.settle(reply);
+    // after settle, which makes a restored world's joints; before any code awaiting the reply runs
+    if (reply.anchors !== undefined) this.#adoptAnchors(reply.anchors);
+  }
+
+  /** The anchors of the joints the worker made (see Reply.anchors), for drawing. */
+  #adoptAnchors(anchors: number[]): void {
+    for (let i = 0; i < anchors.length; i += JOINT_ANCHORS_STRIDE) {
+      const joint = this.#joints[anchors[i]];
+      if (joint === undefined) continue;
+      joint.localAnchors = Float64Array.of(anchors[i + 1], anchors[i + 2], anchors[i + 3], anchors[i + 4]);
+    }
   }
 
   /** Ends the worker and rejects what waits, with a FulcrumError that says why. */
@@ -636,18 +668,20 @@ export class WorkerWorld {
     const restored = reply.restored as RestoredHandles;
     this.#gravity = restored.gravity;
     restored.bodies.forEach((type, id) => {
-      this.#bodies.push(new WorkerBody(this, id, 1, type, null, undefined));
+      const body = new WorkerBody(this, id, 1, type, null, undefined);
+      body.bullet = restored.bullets[id];
+      this.#bodies.push(body);
       this.#generations.push(1);
     });
     this.#bodyCount = restored.bodies.length;
-    for (const [bodyId, geometry] of restored.shapes) {
-      this.addShape(this.#bodies[bodyId]!, deepFreeze(geometry) as unknown as Geometry, undefined);
+    for (const [bodyId, geometry, sensor] of restored.shapes) {
+      this.addShape(this.#bodies[bodyId]!, deepFreeze(geometry) as unknown as Geometry, sensor, undefined);
     }
-    for (const [type, a, b] of restored.joints) {
+    for (const [type, a, b, target] of restored.joints) {
       const bodyA = this.#bodies[a]!;
       const bodyB = this.#bodies[b]!;
       const id = this.#allocate('joints');
-      const joint = new WorkerJoint(this, id, type, bodyA, bodyB, undefined);
+      const joint = new WorkerJoint(this, id, type, bodyA, bodyB, target, undefined);
       this.#joints[id] = joint;
       bodyA.jointList.push(joint);
       if (bodyB !== bodyA) bodyB.jointList.push(joint);

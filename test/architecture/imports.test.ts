@@ -60,6 +60,7 @@ const LAYERS: Record<string, readonly string[]> = {
     'api',
     'joints',
   ],
+  // draws and runs a World or a WorkerWorld (worker/ names no render/ module)
   render: [
     'core',
     'math',
@@ -72,6 +73,7 @@ const LAYERS: Record<string, readonly string[]> = {
     'api',
     'joints',
     'query',
+    'worker',
   ],
   // the matter.js layer: over the public API (index.ts) and the browser layer
   matter: [

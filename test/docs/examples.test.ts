@@ -11,7 +11,14 @@ const DOCS = resolve(__dirname, '../../docs');
 const EXAMPLES = join(DOCS, 'examples');
 /** Run in the browser by the e2e test. */
 // run in the browser by the e2e tests, and script-tag.html by npm run pack:check against the packed package
-const BROWSER_EXAMPLES = ['canvas-render.ts', 'pixi-render.ts', 'canvas.html', 'script-tag.html'];
+const BROWSER_EXAMPLES = [
+  'canvas-render.ts',
+  'pixi-render.ts',
+  'canvas.html',
+  'script-tag.html',
+  // run by test/e2e/worker-stress.test.ts, on a cross-origin isolated page
+  'worker-render.ts',
+];
 
 // the examples print what they show; keep the test output to the results
 beforeAll(() => {

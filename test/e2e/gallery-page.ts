@@ -50,13 +50,21 @@ export async function waitForSteps(page: Page, steps: number, timeout = 20_000):
 /** A screenshot of the stage (the demo's canvas), decoded. */
 /**
  * Starts the current demo again and pauses it before it takes a step (both in one task of the page, so
- * no frame comes between), as the Reset and Pause buttons do.
+ * no frame comes between), as the Reset and Pause buttons do; a demo made asynchronously (a worker
+ * world's) is waited for.
  */
 export async function restartPaused(page: Page): Promise<void> {
-  await page.evaluate(() => {
+  type Started = { gallery: { runner: { paused: boolean }; started: number } };
+  const before = await page.evaluate(() => {
+    const started = (window as unknown as Started).gallery.started;
     document.getElementById('btn-reset')?.click();
-    const g = (window as unknown as { gallery: { runner: { paused: boolean } } }).gallery;
+    const g = (window as unknown as Started).gallery;
     if (!g.runner.paused) document.getElementById('btn-pause')?.click();
+    return started;
+  });
+  // a demo whose world runs in a worker starts once its worker runs: wait for it
+  await page.waitForFunction((n) => (window as unknown as Started).gallery.started > n, before, {
+    timeout: 20_000,
   });
 }
 

@@ -29,6 +29,9 @@ export async function serveDirectory(root: string): Promise<{ url: string; close
         response.writeHead(200, {
           'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
           'cache-control': 'no-store',
+          // as the gallery's Vite server sends them (vite.config.ts): the pages are cross-origin isolated
+          'cross-origin-opener-policy': 'same-origin',
+          'cross-origin-embedder-policy': 'require-corp',
         });
         response.end(body);
       },
