@@ -9,6 +9,7 @@
  */
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { demos } from '../../examples/registry';
 import { type Browser, launchChromium } from './browser';
@@ -29,6 +30,32 @@ const UPDATE = process.env.UPDATE_VISUALS === '1';
 const STEPS = 60;
 /** the share of pixels that may differ (by more than 8 levels in a channel) from the stored picture */
 const TOLERANCE = 0.005;
+
+/**
+ * For a demo whose world steps in a worker: waits until the worker has finished the `steps` steps
+ * sent and the page has drawn a frame after (a local world's steps are drawn as they are taken).
+ */
+async function waitForWorkerWorld(page: Page, steps: number): Promise<void> {
+  type Gallery = {
+    gallery: { instance: { world: { stepCount?: number } }; runner: { stepsInFlight?: number } };
+  };
+  // a World has no step count of its own; a WorkerWorld counts the steps its worker finished
+  const inWorker = await page.evaluate(
+    () => typeof (window as unknown as Gallery).gallery.instance.world.stepCount === 'number',
+  );
+  if (!inWorker) return;
+  await page.waitForFunction(
+    (n) => {
+      const g = (window as unknown as Gallery).gallery;
+      return g.instance.world.stepCount === n && g.runner.stepsInFlight === 0;
+    },
+    steps,
+    { timeout: 60_000 },
+  );
+  await page.evaluate(
+    () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))),
+  );
+}
 
 let browser: Browser;
 const url = inject('galleryUrl');
@@ -53,7 +80,11 @@ describe('every demo looks as stored', () => {
         if (ownRenderer) await waitForOwnRenderer(open.page);
         await stepByHand(open.page, STEPS);
         if (ownRenderer) await waitForDrawnStep(open.page);
-        const png = await open.page.locator('#stage').screenshot({ animations: 'disabled' });
+        await waitForWorkerWorld(open.page, STEPS);
+        // readouts of measured times (.timings) differ from run to run: masked
+        const png = await open.page
+          .locator('#stage')
+          .screenshot({ animations: 'disabled', mask: [open.page.locator('#stage .timings')] });
         const stored = resolve(BASELINES, `${demo.id}.png`);
         if (UPDATE) {
           writeFileSync(stored, png);
