@@ -3,9 +3,11 @@ import type { MatterVertex } from './vertices';
 
 /**
  * A simulated body's parts' vertices and bounds, written from the last read-back's pose only when a
- * program next reads (or replaces) them: a program that draws nothing pays nothing for them. The
- * fields are accessors from the body's creation on (`defineVertexFields`): made accessors later, the
- * objects would drop to V8's slow dictionary properties.
+ * program next reads (or replaces) them: a program that draws nothing pays nothing for them. Once a
+ * program has read them, they are written at every read-back as matter writes them (`eager`): a
+ * program may keep the arrays and read them later without going through the body. The fields are
+ * accessors from the body's creation on (`defineVertexFields`): made accessors later, the objects
+ * would drop to V8's slow dictionary properties.
  */
 /** What this module uses of a matter body (body.ts's MatterBody has it). */
 export interface PosedPart {
@@ -17,6 +19,8 @@ export interface PosedPart {
 export class PartPoses {
   /** whether the parts' fields show the pose below */
   posed = true;
+  /** whether a program has read the fields: then each read-back writes them at once */
+  eager = false;
   /** the parts whose fields wait for this pose, in the order of `outlines` */
   parts: PosedPart[] = [];
   /** each part's outline in the body's frame (x, y of each vertex in turn) */
@@ -62,6 +66,12 @@ export class PartPoses {
     }
   }
 
+  /** A program reads or replaces a part's fields: they show the latest pose from now on. */
+  read(): void {
+    this.eager = true;
+    if (!this.posed) this.write();
+  }
+
   /** Makes `parts` (with these outlines) wait for this pose, and lets the parts it had go (written). */
   attach(parts: PosedPart[], outlines: Float64Array[]): void {
     this.detach();
@@ -81,25 +91,25 @@ export class PartPoses {
 
 function getVertices(this: PosedPart): MatterVertex[] {
   const pose = this._pose;
-  if (pose !== null && !pose.posed) pose.write();
+  if (pose !== null) pose.read();
   return this._vertices;
 }
 
 function setVertices(this: PosedPart, vertices: MatterVertex[]): void {
   const pose = this._pose;
-  if (pose !== null && !pose.posed) pose.write();
+  if (pose !== null) pose.read();
   this._vertices = vertices;
 }
 
 function getBounds(this: PosedPart): MatterBounds {
   const pose = this._pose;
-  if (pose !== null && !pose.posed) pose.write();
+  if (pose !== null) pose.read();
   return this._bounds;
 }
 
 function setBounds(this: PosedPart, bounds: MatterBounds): void {
   const pose = this._pose;
-  if (pose !== null && !pose.posed) pose.write();
+  if (pose !== null) pose.read();
   this._bounds = bounds;
 }
 

@@ -387,13 +387,14 @@ export function readBack(sim: Simulated, state: Float64Array): void {
     Events.trigger(body, body.isSleeping ? 'sleepStart' : 'sleepEnd');
   }
   const pose = sim.pose;
-  pose.posed = false;
   pose.x = cx;
   pose.y = cy;
   pose.c = c;
   pose.s = s;
   pose.vx = vx;
   pose.vy = vy;
+  if (pose.eager) pose.write();
+  else pose.posed = false;
   const parts = body.parts;
   for (let k = 1; k < parts.length; k++) {
     const part = parts[k];

@@ -269,6 +269,28 @@ describe('fulcrum/matter vertices and bounds', () => {
     }
   });
 
+  it('kept by a program, the arrays still show the body after later updates (as matter writes them)', () => {
+    for (const [name, Matter] of both) {
+      const engine = Matter.Engine.create();
+      engine.gravity.y = 0;
+      const box = Matter.Bodies.rectangle(100, 200, 60, 20, { frictionAir: 0 });
+      Matter.Composite.add(engine.world, box);
+      Matter.Body.setVelocity(box, { x: 3, y: 1 });
+      Matter.Body.setAngularVelocity(box, 0.04);
+      Matter.Engine.update(engine);
+      const kept = box.vertices;
+      const keptBounds = box.bounds;
+      for (let i = 0; i < 25; i++) Matter.Engine.update(engine);
+      const { x, y } = box.position;
+      const expected = corners(x, y, 60, 20, box.angle);
+      kept.forEach((v, k) => {
+        expect(Math.abs(v.x - expected[k].x), name).toBeLessThan(1e-9);
+        expect(Math.abs(v.y - expected[k].y), name).toBeLessThan(1e-9);
+      });
+      expect(keptBounds.min.x, name).toBeCloseTo(Math.min(...expected.map((p) => p.x)), 9);
+    }
+  });
+
   it('move with Body.setPosition and setAngle right after an update that nobody read', () => {
     for (const [name, Matter] of both) {
       const engine = Matter.Engine.create();
