@@ -133,7 +133,7 @@ function stoneWall(): LevelDef {
   blocks.push({ material: 'stone', x: 13.45, y: 2.6, halfWidth: 0.9, halfHeight: 0.2 });
   const ledge = 1.5;
   const top = hut(blocks, 19, ledge, 2.2, 'wood', 'stone', 0.7);
-  blocks.push({ material: 'wood', x: 23, y: 0.6, halfWidth: 0.2, halfHeight: 0.6 });
+  blocks.push({ material: 'ice', x: 23, y: 0.4, halfWidth: 0.15, halfHeight: 0.4 });
   return {
     name: 'Stone wall',
     hint: 'Stone is tough. The big grey bird is heavy enough to smash it.',
@@ -152,7 +152,7 @@ function stoneWall(): LevelDef {
 
 function hangingGarden(): LevelDef {
   const blocks: BlockDef[] = [];
-  // a gallows of rock: two pillars and a beam; a wooden platform hangs from the beam on two ropes
+  // a gallows of rock: a pillar at the back and a beam; a wooden platform hangs from it on two ropes
   const beamY = 8;
   const platformY = 4.6;
   blocks.push({ material: 'wood', x: 20, y: platformY, halfWidth: 1.8, halfHeight: 0.15 });
@@ -165,9 +165,8 @@ function hangingGarden(): LevelDef {
     hint: 'A tap splits the blue bird in three. Break the platform and its guests fall.',
     birds: ['split', 'red', 'fast'],
     rocks: [
-      { x: 16.8, y: beamY / 2, halfWidth: 0.3, halfHeight: beamY / 2 },
-      { x: 23.2, y: beamY / 2, halfWidth: 0.3, halfHeight: beamY / 2 },
-      { x: 20, y: beamY + 0.25, halfWidth: 3.5, halfHeight: 0.25 },
+      { x: 23.6, y: beamY / 2, halfWidth: 0.3, halfHeight: beamY / 2 },
+      { x: 20.6, y: beamY + 0.25, halfWidth: 3.3, halfHeight: 0.25 },
     ],
     blocks,
     targets: [
