@@ -63,9 +63,9 @@ export class Painter {
   private grass: CanvasGradient | null = null;
   private readonly cracks = new WeakMap<Block, Path2D[]>();
   private readonly hills: HillLayer[] = [
-    { path: hillPath(7, 2.5, 1, 0.5), parallax: 0.2, color: '#b5dcc2' },
-    { path: hillPath(4, 2, 0.8, 2.1), parallax: 0.45, color: '#8fca84' },
-    { path: hillPath(1.6, 1.2, 0.5, 4), parallax: 0.7, color: '#6bb25a' },
+    { path: hillPath(4.2, 1.6, 0.7, 0.5), parallax: 0.2, color: '#b5dcc2' },
+    { path: hillPath(2.6, 1.2, 0.6, 2.1), parallax: 0.45, color: '#8fca84' },
+    { path: hillPath(1.1, 0.7, 0.4, 4), parallax: 0.7, color: '#6bb25a' },
   ];
   private readonly cloud = cloudPath();
   private readonly xf: Transform = { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } };

@@ -20,8 +20,8 @@ const BELOW_GROUND = 1.2;
 /** the sling sits this far from the view's left edge, m, at most this share of the view's width */
 const SLING_MARGIN = 4.5;
 const SLING_SHARE = 0.35;
-/** the whole level stays in view when it is no more than this much wider than the sling's view */
-const WHOLE_LEVEL = 1.25;
+/** the whole level stays in view when it fits at this many CSS pixels per metre or more (a bird 20 px wide) */
+const WHOLE_LEVEL_SCALE = 28;
 /** the level's far end: right of its last block, m */
 const FAR_MARGIN = 3;
 /** steps the opening view of the level is held before the glide to the sling */
@@ -72,7 +72,7 @@ export class GameCamera {
     const slingHalf = this.fit(width, MIN_HEIGHT);
     const levelHalf = this.fit(this.levelRight - left, MIN_HEIGHT);
     // on a wide screen the whole level fits at a good size: it stays in view all the time
-    const wholeFits = levelHalf <= slingHalf * WHOLE_LEVEL;
+    const wholeFits = this.camera.height / (2 * levelHalf) >= WHOLE_LEVEL_SCALE;
     const half = wholeFits ? levelHalf : what === 'level' ? levelHalf : slingHalf;
     const halfWidth = half * aspect;
     let x = left + halfWidth;

@@ -12,6 +12,12 @@ import { Hud } from './hud';
 import { TrajectoryPreview } from './preview';
 
 const STORAGE_KEY = 'fulcrum-slingshot-stars';
+/**
+ * The most device pixels the canvas gets: beyond it (a 4K screen, a big window at a high pixel
+ * ratio) the canvas is drawn at a lower ratio and scaled up, so a frame costs no more than at 2560 ×
+ * 1950. The art is soft shapes: it shows little.
+ */
+const MAX_PIXELS = 5e6;
 /** the level's hint shows this long, steps */
 const HINT_STEPS = 300;
 
@@ -132,24 +138,38 @@ export const slingshotDemo: Demo = {
         effects.step(STEP);
         camera.step();
         painter.cloudDrift += 0.01;
-        if (hintSteps > 0 && --hintSteps === 0) hud.setHint('');
+        if (hintSteps > 0) hintSteps--;
+        // while a bird with a trick flies, how to use it; else the level's hint for a while
         const bird = game.flying[game.flying.length - 1];
-        if (game.state === 'flying' && bird && !bird.spent && bird.type.ability !== 'none') {
-          hud.setHint(bird.type.ability === 'split' ? 'Tap to split the bird in three!' : 'Tap to dash!');
-        } else if (hintSteps === 0 || game.state === 'won' || game.state === 'lost') {
-          hud.setHint('');
-        }
+        const trick = game.state === 'flying' && bird && !bird.spent ? bird.type.ability : 'none';
+        const playing = game.state !== 'won' && game.state !== 'lost';
+        hud.setHint(
+          trick === 'split'
+            ? 'Tap to split the bird in three!'
+            : trick === 'dash'
+              ? 'Tap to dash!'
+              : hintSteps > 0 && playing
+                ? game.levelDef.hint
+                : '',
+        );
       }),
     );
 
     let viewWidth = 0;
     let viewHeight = 0;
+    ctx.track(() => {
+      render.pixelRatio = null;
+    });
     ctx.track(
       render.on('beforeDraw', ({ context }) => {
         if (render.camera.width !== viewWidth || render.camera.height !== viewHeight) {
           viewWidth = render.camera.width;
           viewHeight = render.camera.height;
           camera.resized();
+          // takes effect from the next frame
+          const ratio = window.devicePixelRatio || 1;
+          const cap = Math.sqrt(MAX_PIXELS / (viewWidth * viewHeight));
+          render.pixelRatio = ratio > cap ? cap : null;
         }
         painter.draw(context);
       }),
