@@ -15,9 +15,9 @@ const STORAGE_KEY = 'fulcrum-slingshot-stars';
 /**
  * The most device pixels the canvas gets: beyond it (a 4K screen, a big window at a high pixel
  * ratio) the canvas is drawn at a lower ratio and scaled up, so a frame costs no more than at 2560 ×
- * 1950. The art is soft shapes: it shows little.
+ * 1560. The art is soft shapes: it shows little.
  */
-const MAX_PIXELS = 5e6;
+const MAX_PIXELS = 4e6;
 /** the level's hint shows this long, steps */
 const HINT_STEPS = 300;
 
