@@ -18,7 +18,7 @@ import { planetsDemo } from './demos/planets';
 import { pyramidDemo } from './demos/pyramid';
 import { ragdollsDemo } from './demos/ragdolls';
 import { rayCastDemo } from './demos/ray-cast';
-import { slingshotDemo } from './demos/slingshot';
+import { slingshotDemo } from './demos/slingshot/demo';
 import { softBodyDemo } from './demos/soft-body';
 import { stressDemo } from './demos/stress';
 import { stressWorkerDemo } from './demos/stress-worker';
