@@ -5,7 +5,7 @@
  * patterns and paths are made once and reused; a frame allocates nothing but the odd score text.
  */
 import type { Body, Transform } from '../../../src/index';
-import type { Interpolator, Render } from '../../../src/render/index';
+import type { AnyWorld, Interpolator, Render } from '../../../src/render/index';
 import { type BirdKind, birdTypes } from './birds';
 import { type Effects, PARTICLE_COUNT, ParticleKind, POPUP_COUNT, particleColors } from './effects';
 import { ANCHOR, type Bird, type Block, type SlingshotGame, type Target } from './game';
@@ -76,7 +76,7 @@ export class Painter {
   cloudDrift = 0;
 
   constructor(
-    private readonly render: Render,
+    private readonly render: Render<AnyWorld>,
     private readonly interpolator: Interpolator,
     private readonly game: SlingshotGame,
     private readonly preview: TrajectoryPreview,
