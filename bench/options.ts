@@ -31,10 +31,11 @@ export const USAGE = `usage: npm run bench -- [--quick] [--engines a,b] [--scene
                       and time by the median of the rounds' medians: a noisy machine's slow spells
                       then fall on different runs each round
   --profile <scene>   CPU-profile Fulcrum (or --engines) on one scene and print the top functions by self time
-  --browser [name]    run in headless Chromium (the default; /usr/bin/chromium or CHROMIUM_PATH) or Firefox
-                      (/usr/bin/firefox or FIREFOX_PATH) instead of Node: each run in a fresh browser
-                      context and page, served cross-origin isolated from 127.0.0.1; writes
-                      bench/results/browser-<name>[-quick].json and .svg beside Node's results`;
+  --browser [name]    run in headless Chromium (the default: /usr/bin/chromium or CHROMIUM_PATH) or Firefox
+                      (/usr/bin/firefox from Debian's firefox-esr, or FIREFOX_PATH) instead of Node: each
+                      run in a fresh browser context and page, served cross-origin isolated from
+                      127.0.0.1; writes bench/results/browser-<name>[-quick].json and .svg beside Node's
+  --help              this text`;
 
 function list(value: string | undefined, flag: string, known: string[]): string[] {
   if (!value) throw new Error(`${flag} needs a comma-separated list`);
