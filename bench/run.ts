@@ -164,7 +164,9 @@ async function main(): Promise<void> {
   const json = join(resultsDir, `${resultsName(options)}.json`);
   const svg = join(resultsDir, `${resultsName(options)}.svg`);
   const date = new Date().toISOString();
-  const runtime = browser ? `${browser.browser.name} ${browser.browser.version}` : `Node ${process.version}`;
+  const runtime = browser
+    ? `${browser.browser.name === 'chromium' ? 'Chromium' : 'Firefox'} ${browser.browser.version}`
+    : `Node ${process.version}`;
   writeFileSync(
     json,
     `${JSON.stringify({ date, quick: options.quick, rounds: options.rounds, node: process.version, browser: browser?.browser, machine, engines, scenes: options.scenes, results, raycast }, null, 2)}\n`,
