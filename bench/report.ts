@@ -35,13 +35,15 @@ export function formatReport(
   scenes: string[],
   results: RunResult[],
   rounds = 1,
+  /** where each run starts afresh: a Node process, or a browser page */
+  fresh: 'process' | 'page' = 'process',
 ): string {
   const find = (engine: string, scene: string) =>
     results.find((r) => r.engine === engine && r.scene === scene);
   const out: string[] = [];
   const what =
     rounds > 1
-      ? `median of ${rounds} rounds' medians of the timed windows, each round in fresh processes`
+      ? `median of ${rounds} rounds' medians of the timed windows, each round in fresh ${fresh === 'page' ? 'pages' : 'processes'}`
       : 'median of the timed windows';
   out.push(`ms per step (${what}; lower is better)`);
   out.push(
@@ -96,7 +98,7 @@ export function formatReport(
     };
     out.push('');
     out.push(
-      'cold start in a fresh process (first step ms / mean of the first 60 steps ms / wall time until',
+      `cold start in a fresh ${fresh} (first step ms / mean of the first 60 steps ms / wall time until`,
     );
     out.push('the steps stay within 10 % of the same steps run warmed)');
     out.push(

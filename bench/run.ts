@@ -1,14 +1,17 @@
 /**
- * `npm run bench`: every selected engine on every selected scene, each in a fresh Node process.
- * Prints the tables, writes bench/results/results[-quick].json and .svg. See options.ts for flags.
+ * `npm run bench`: every selected engine on every selected scene, each in a fresh Node process (or,
+ * with --browser, a fresh browser page: bench/browser/). Prints the tables, writes
+ * bench/results/results[-quick].json and .svg (browser-<name>[-quick] for a browser). See options.ts
+ * for flags.
  */
 import { mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, platform, release } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { type BrowserBench, startBrowserBench } from './browser/run-browser';
 import { findEngine } from './engines';
 import { mergeRounds } from './merge-rounds';
-import { type BenchOptions, parseOptions, USAGE } from './options';
+import { type BenchOptions, parseOptions, resultsName, USAGE } from './options';
 import { topSelfTimes } from './profile';
 import { type RayCastBenchResult, rayCastBenchText, runRayCastBench } from './raycast';
 import { type EngineInfo, formatReport, qualityText } from './report';
@@ -35,7 +38,9 @@ function progress(text: string): void {
   else process.stdout.write(`${text}\n`);
 }
 
-async function runAll(options: BenchOptions, engines: EngineInfo[]): Promise<RunResult[]> {
+type RunOne = (engine: string, scene: string, timeoutMs: number) => Promise<RunResult>;
+
+async function runAll(options: BenchOptions, engines: EngineInfo[], runOne: RunOne): Promise<RunResult[]> {
   const rounds: RunResult[][] = [];
   const unavailable = new Map<string, RunResult>();
   const total = options.rounds * engines.length * options.scenes.length;
@@ -54,10 +59,7 @@ async function runAll(options: BenchOptions, engines: EngineInfo[]): Promise<Run
         const elapsed = ((performance.now() - started) / 1000).toFixed(0);
         const of = options.rounds > 1 ? ` round ${round}/${options.rounds}` : '';
         progress(`[${done}/${total}] ${elapsed} s${of}  ${engine.label} on ${scene} ...`);
-        const result = await runWorker(engine.id, scene, {
-          quick: options.quick,
-          timeoutMs: options.quick ? 60_000 : 600_000,
-        });
+        const result = await runOne(engine.id, scene, options.quick ? 60_000 : 600_000);
         if (result.stage === 'load' || result.stage === 'free-fall') unavailable.set(engine.id, result);
         results.push(result);
       }
@@ -109,6 +111,10 @@ function mainThreadProfile(dir: string): string {
 }
 
 async function main(): Promise<void> {
+  if (process.argv.includes('--help')) {
+    console.log(USAGE);
+    return;
+  }
   let options: BenchOptions;
   try {
     options = parseOptions(process.argv.slice(2));
@@ -122,12 +128,29 @@ async function main(): Promise<void> {
     await profile(options, engines);
     return;
   }
-  const results = await runAll(options, engines);
+  let browser: BrowserBench | null = null;
+  let results: RunResult[];
+  if (options.browser) {
+    progress(`starting ${options.browser} ...`);
+    browser = await startBrowserBench(options.browser);
+    const bench = browser;
+    try {
+      results = await runAll(options, engines, (engine, scene, timeoutMs) =>
+        bench.run(engine, scene, options.quick, timeoutMs),
+      );
+    } finally {
+      await bench.close();
+    }
+  } else {
+    results = await runAll(options, engines, (engine, scene, timeoutMs) =>
+      runWorker(engine, scene, { quick: options.quick, timeoutMs }),
+    );
+  }
   console.log('');
-  console.log(formatReport(engines, options.scenes, results, options.rounds));
+  console.log(formatReport(engines, options.scenes, results, options.rounds, browser ? 'page' : 'process'));
   // Fulcrum-only query timing (issue 4), in this process: a few seconds
   let raycast: RayCastBenchResult | null = null;
-  if (options.engines.includes('fulcrum')) {
+  if (options.engines.includes('fulcrum') && !browser) {
     raycast = runRayCastBench(options.quick ? 3 : 5);
     console.log(`\n${rayCastBenchText(raycast)}`);
   }
@@ -137,20 +160,28 @@ async function main(): Promise<void> {
     cores: cpus().length,
     os: `${platform()} ${release()}`,
   };
-  const suffix = options.quick ? '-quick' : '';
   mkdirSync(resultsDir, { recursive: true });
-  const json = join(resultsDir, `results${suffix}.json`);
-  const svg = join(resultsDir, `results${suffix}.svg`);
+  const json = join(resultsDir, `${resultsName(options)}.json`);
+  const svg = join(resultsDir, `${resultsName(options)}.svg`);
   const date = new Date().toISOString();
+  const runtime = browser
+    ? `${browser.browser.name === 'chromium' ? 'Chromium' : 'Firefox'} ${browser.browser.version}`
+    : `Node ${process.version}`;
   writeFileSync(
     json,
-    `${JSON.stringify({ date, quick: options.quick, rounds: options.rounds, node: process.version, machine, engines, scenes: options.scenes, results, raycast }, null, 2)}\n`,
+    `${JSON.stringify({ date, quick: options.quick, rounds: options.rounds, node: process.version, browser: browser?.browser, machine, engines, scenes: options.scenes, results, raycast }, null, 2)}\n`,
   );
   const of = `${options.quick ? ' (quick)' : ''}${options.rounds > 1 ? `, median of ${options.rounds} rounds` : ''}`;
-  const title = `Fulcrum vs peers, ms per step${of}: ${machine.cpu}, Node ${process.version}, ${date.slice(0, 10)}`;
+  const title = `Fulcrum vs peers, ms per step${of}: ${machine.cpu}, ${runtime}, ${date.slice(0, 10)}`;
   writeFileSync(svg, svgChart(engines, options.scenes, results, title));
   console.log(`\nwrote ${json}\nwrote ${svg}`);
-  console.log(`machine: ${machine.cpu}, ${machine.cores} cores, ${machine.os}, Node ${process.version}`);
+  console.log(`machine: ${machine.cpu}, ${machine.cores} cores, ${machine.os}, ${runtime}`);
+  if (browser) {
+    const b = browser.browser;
+    console.log(
+      `${b.userAgent}; cross-origin isolated: ${b.crossOriginIsolated}, performance.now() steps of ${(b.timerResolutionMs * 1000).toFixed(1)} us`,
+    );
+  }
 }
 
 main().catch((error) => {
