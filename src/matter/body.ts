@@ -2,7 +2,6 @@ import type { Body as FulcrumBody } from '../api/body';
 import { fail } from '../core/errors';
 import { Bounds, type MatterBounds } from './bounds';
 import { Common } from './common';
-import { defineVertexFields, type PartPoses } from './part-pose';
 import { type MatterVector, Vector } from './vector';
 import { type MatterVertex, Vertices } from './vertices';
 
@@ -58,11 +57,6 @@ export interface MatterBody {
   _stale?: Stale;
   /** a chamfered rectangle's exact shape (Bodies.rectangle; not enumerable), until its vertices change */
   _rounded?: { corners: MatterVector[]; radius: number } | null;
-  /** the pose its vertices and bounds wait for while it is simulated (not enumerable; see part-pose.ts) */
-  _pose: PartPoses | null;
-  /** what `vertices` and `bounds` hold (not enumerable) */
-  _vertices: MatterVertex[];
-  _bounds: MatterBounds;
 }
 
 /** What `Body.create` takes: any of a body's fields, and its outline as plain points. */
@@ -149,16 +143,14 @@ export const Body = {
 
   /** A body from `options` (matter's defaults for the rest); vertices default to a 40 px square. */
   create(options: BodyOptions = {}): MatterBody {
-    // vertices and bounds are accessors (part-pose.ts): copied in as plain fields, they could not be
-    const { vertices: _, bounds: __, ...fields } = options;
-    const body = Common.extend(true, defaults(), fields) as unknown as MatterBody;
-    defineVertexFields(body, [], Bounds.create());
+    const body = Common.extend(true, defaults(), options) as unknown as MatterBody;
     body.id = options.id ?? Common.nextId();
     Object.defineProperty(body, '_fulcrum', { value: null, writable: true, enumerable: false });
     Object.defineProperty(body, '_stale', { value: Stale.NO, writable: true, enumerable: false });
     const points = options.vertices ?? Vertices.fromPath('L 0 0 L 40 0 L 40 40 L 0 40');
     body.parent = body;
     body.parts = [body];
+    body.bounds = Bounds.create();
     body.positionPrev = Vector.clone(body.position);
     body.anglePrev = body.angle;
     const angle = body.angle;

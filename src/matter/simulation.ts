@@ -10,7 +10,6 @@ import { type MatterBody, Stale, VELOCITY_TO_SI } from './body';
 import { Composite, type MatterComposite } from './composite';
 import type { MatterConstraint } from './constraint';
 import { Events } from './events';
-import { PartPoses } from './part-pose';
 import type { MatterVector } from './vector';
 
 /*
@@ -24,8 +23,8 @@ import type { MatterVector } from './vector';
 export interface Simulated {
   body: MatterBody;
   fulcrum: FulcrumBody;
-  /** the parts' outlines in the body's frame and the pose their vertices and bounds wait for */
-  pose: PartPoses;
+  /** each part's outline in the body's frame (x, y of each vertex in turn), in the order of body.parts */
+  outlines: Float64Array[];
   /** each part's position in the body's frame (compound bodies) */
   offsets: MatterVector[];
   /** the fields a program may set directly that the Fulcrum body was last given */
@@ -189,7 +188,7 @@ function buildShapes(sim: Simulated): void {
     }
   }
   sim.surfaces = body.parts.map(surfaceOf);
-  const outlines = body.parts.map((part) => {
+  sim.outlines = body.parts.map((part) => {
     const outline = new Float64Array(2 * part.vertices.length);
     part.vertices.forEach((p, i) => {
       const q = toLocal(p, origin, c, s);
@@ -199,7 +198,6 @@ function buildShapes(sim: Simulated): void {
     return outline;
   });
   sim.offsets = body.parts.map((part) => toLocal(part.position, origin, c, s));
-  sim.pose.attach(body.parts.slice(), outlines);
   applyMass(sim);
   body._stale = Stale.NO;
 }
@@ -260,7 +258,7 @@ function simulate(link: FulcrumLink, body: MatterBody): Simulated {
   const sim: Simulated = {
     body,
     fulcrum,
-    pose: new PartPoses(),
+    outlines: [],
     offsets: [],
     frictionAir: body.frictionAir,
     surfaces: [],
@@ -335,7 +333,6 @@ export function syncMembers(link: FulcrumLink, world: MatterComposite): void {
       kept.push(sim);
       continue;
     }
-    sim.pose.detach();
     link.world.destroyBody(sim.fulcrum);
     link.bodies.delete(sim.body);
     sim.body._fulcrum = null;
@@ -350,9 +347,8 @@ export function syncMembers(link: FulcrumLink, world: MatterComposite): void {
 }
 
 /**
- * Writes the Fulcrum body's state into the matter body: position, angle, velocities, sleep; its
- * parts' vertices and bounds when they are next read (PartPoses). A body asleep since the last update
- * has not moved.
+ * Writes the Fulcrum body's state into the matter body: pose, vertices, bounds (widened by the
+ * velocity, as matter's), velocities, sleep. A body asleep since the last update has not moved.
  */
 export function readBack(sim: Simulated, state: Float64Array): void {
   const { body, fulcrum } = sim;
@@ -386,22 +382,39 @@ export function readBack(sim: Simulated, state: Float64Array): void {
     body.isSleeping = !awake;
     Events.trigger(body, body.isSleeping ? 'sleepStart' : 'sleepEnd');
   }
-  const pose = sim.pose;
-  pose.x = cx;
-  pose.y = cy;
-  pose.c = c;
-  pose.s = s;
-  pose.vx = vx;
-  pose.vy = vy;
-  if (pose.eager) pose.write();
-  else pose.posed = false;
   const parts = body.parts;
-  for (let k = 1; k < parts.length; k++) {
+  for (let k = 0; k < parts.length; k++) {
     const part = parts[k];
-    const o = sim.offsets[k];
-    part.position.x = cx + c * o.x - s * o.y;
-    part.position.y = cy + s * o.x + c * o.y;
-    part.angle += turned;
+    const outline = sim.outlines[k];
+    const vertices = part.vertices;
+    let minX = Number.POSITIVE_INFINITY;
+    let minY = Number.POSITIVE_INFINITY;
+    let maxX = Number.NEGATIVE_INFINITY;
+    let maxY = Number.NEGATIVE_INFINITY;
+    for (let i = 0, n = outline.length >> 1; i < n; i++) {
+      const px = outline[2 * i];
+      const py = outline[2 * i + 1];
+      const x = cx + c * px - s * py;
+      const y = cy + s * px + c * py;
+      const vertex = vertices[i];
+      vertex.x = x;
+      vertex.y = y;
+      if (x < minX) minX = x;
+      if (x > maxX) maxX = x;
+      if (y < minY) minY = y;
+      if (y > maxY) maxY = y;
+    }
+    const bounds = part.bounds;
+    bounds.min.x = vx < 0 ? minX + vx : minX;
+    bounds.max.x = vx > 0 ? maxX + vx : maxX;
+    bounds.min.y = vy < 0 ? minY + vy : minY;
+    bounds.max.y = vy > 0 ? maxY + vy : maxY;
+    if (part !== body) {
+      const o = sim.offsets[k];
+      part.position.x = cx + c * o.x - s * o.y;
+      part.position.y = cy + s * o.x + c * o.y;
+      part.angle += turned;
+    }
   }
   position.x = cx;
   position.y = cy;
