@@ -184,10 +184,14 @@ export const Vertices = {
     return out;
   },
 
-  /** Sorts the vertices clockwise on a y-down screen about their mean, in place. */
+  /**
+   * Sorts the vertices clockwise on a y-down screen about their mean, in place. By the deterministic
+   * arcTangent2 (matter's Vector.angle is Math.atan2): a compound body's hull is sorted here, and the
+   * world steps its shapes.
+   */
   clockwiseSort<T extends MatterVector[]>(vertices: T): T {
-    const centre = Vertices.mean(vertices);
-    vertices.sort((p, q) => Vector.angle(centre, p) - Vector.angle(centre, q));
+    const { x, y } = Vertices.mean(vertices);
+    vertices.sort((p, q) => arcTangent2(p.y - y, p.x - x) - arcTangent2(q.y - y, q.x - x));
     return vertices;
   },
 

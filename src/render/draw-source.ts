@@ -80,3 +80,34 @@ export interface DrawSource {
   /** Each shape's bounding box; absent where the source has none. */
   forEachAABB?(visit: (minX: number, minY: number, maxX: number, maxY: number) => void): void;
 }
+
+/** Scratch records a drawing source fills and hands to its visitors, one of each kind, reused. */
+export function newBodyRecord(): BodyRecord {
+  return {
+    handle: null!,
+    index: 0,
+    type: 'static',
+    bullet: false,
+    awake: false,
+    transform: { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } },
+  };
+}
+
+export function newShapeRecord(): ShapeRecord {
+  return { handle: null!, geometry: null!, sensor: false } as ShapeRecord;
+}
+
+export function newMotionRecord(): MotionRecord {
+  return { localCenter: { x: 0, y: 0 }, linearVelocity: { x: 0, y: 0 } };
+}
+
+export function newJointRecord(): JointRecord {
+  return {
+    type: 'distance',
+    bodyA: newBodyRecord(),
+    bodyB: newBodyRecord(),
+    anchorA: { x: 0, y: 0 },
+    anchorB: { x: 0, y: 0 },
+    target: null,
+  };
+}

@@ -1,17 +1,16 @@
 import type { WorkerBody } from '../worker/handles';
 import type { WorkerWorld } from '../worker/worker-world';
-import type { BodyRecord, DrawSource, JointRecord, MotionRecord, ShapeRecord } from './draw-source';
-
-function newBody(): BodyRecord {
-  return {
-    handle: null!,
-    index: 0,
-    type: 'static',
-    bullet: false,
-    awake: false,
-    transform: { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } },
-  };
-}
+import {
+  type BodyRecord,
+  type DrawSource,
+  type JointRecord,
+  type MotionRecord,
+  newBodyRecord,
+  newJointRecord,
+  newMotionRecord,
+  newShapeRecord,
+  type ShapeRecord,
+} from './draw-source';
 
 /**
  * The drawing source of a WorkerWorld: shapes as its create calls made them (known on this thread),
@@ -20,20 +19,10 @@ function newBody(): BodyRecord {
  * the same scene is drawn in the same order. No contacts or bounding boxes: this thread has none.
  */
 export class WorkerDrawSource implements DrawSource {
-  private readonly body = newBody();
-  private readonly shape = { handle: null!, geometry: null!, sensor: false } as ShapeRecord;
-  private readonly motionRecord: MotionRecord = {
-    localCenter: { x: 0, y: 0 },
-    linearVelocity: { x: 0, y: 0 },
-  };
-  private readonly joint: JointRecord = {
-    type: 'distance',
-    bodyA: newBody(),
-    bodyB: newBody(),
-    anchorA: { x: 0, y: 0 },
-    anchorB: { x: 0, y: 0 },
-    target: null,
-  };
+  private readonly body = newBodyRecord();
+  private readonly shape = newShapeRecord();
+  private readonly motionRecord = newMotionRecord();
+  private readonly joint = newJointRecord();
 
   constructor(readonly world: WorkerWorld) {}
 

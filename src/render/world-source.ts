@@ -2,49 +2,32 @@ import type { World } from '../api/world';
 import { BodyFlag, BodyState } from '../store/body-store';
 import { ContactFlag } from '../store/contact-store';
 import { ShapeFlag } from '../store/shape-store';
-import type {
-  BodyRecord,
-  ContactPointRecord,
-  DrawSource,
-  JointRecord,
-  MotionRecord,
-  ShapeRecord,
+import {
+  type BodyRecord,
+  type ContactPointRecord,
+  type DrawSource,
+  type JointRecord,
+  type MotionRecord,
+  newBodyRecord,
+  newJointRecord,
+  newMotionRecord,
+  newShapeRecord,
+  type ShapeRecord,
 } from './draw-source';
 
 /** body types by BodyKind */
 const TYPES = ['static', 'kinematic', 'dynamic'] as const;
-
-function newBody(): BodyRecord {
-  return {
-    handle: null!,
-    index: 0,
-    type: 'static',
-    bullet: false,
-    awake: false,
-    transform: { p: { x: 0, y: 0 }, q: { c: 1, s: 0 } },
-  };
-}
 
 /**
  * The drawing source of a World on this thread: reads its columns (bodies by slot, each body's shapes
  * in the order of its shape list) and never changes them.
  */
 export class WorldDrawSource implements DrawSource {
-  private readonly body = newBody();
-  private readonly shape = { handle: null!, geometry: null!, sensor: false } as ShapeRecord;
-  private readonly motionRecord: MotionRecord = {
-    localCenter: { x: 0, y: 0 },
-    linearVelocity: { x: 0, y: 0 },
-  };
-  private readonly joint: JointRecord = {
-    type: 'distance',
-    bodyA: newBody(),
-    bodyB: newBody(),
-    anchorA: { x: 0, y: 0 },
-    anchorB: { x: 0, y: 0 },
-    target: null,
-  };
-  private readonly contactBody = newBody();
+  private readonly body = newBodyRecord();
+  private readonly shape = newShapeRecord();
+  private readonly motionRecord = newMotionRecord();
+  private readonly joint = newJointRecord();
+  private readonly contactBody = newBodyRecord();
   private readonly contact: ContactPointRecord = {
     body: this.contactBody,
     point: { x: 0, y: 0 },

@@ -165,3 +165,26 @@ export async function waitForDrawnStep(page: Page, timeout = 20_000): Promise<vo
     { timeout },
   );
 }
+
+type WorkerGallery = {
+  gallery: { instance: { world: { stepCount?: number } }; runner: { stepsInFlight: number } };
+};
+
+/** Waits until a demo's worker has finished every step sent, `steps` of them since the demo started. */
+export async function waitForWorkerSteps(page: Page, steps: number): Promise<void> {
+  await page.waitForFunction(
+    (n) => {
+      const g = (window as unknown as WorkerGallery).gallery;
+      return g.instance.world.stepCount === n && g.runner.stepsInFlight === 0;
+    },
+    steps,
+    { timeout: 60_000 },
+  );
+}
+
+/** Whether the current demo's world runs in a worker (a World has no step count of its own; a WorkerWorld counts its worker's). */
+export function runsInWorker(page: Page): Promise<boolean> {
+  return page.evaluate(
+    () => typeof (window as unknown as WorkerGallery).gallery.instance.world.stepCount === 'number',
+  );
+}

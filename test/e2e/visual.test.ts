@@ -17,9 +17,11 @@ import {
   drawsItself,
   openDemo,
   restartPaused,
+  runsInWorker,
   stepByHand,
   waitForDrawnStep,
   waitForOwnRenderer,
+  waitForWorkerSteps,
 } from './gallery-page';
 import { decodePng, differingShare } from './png';
 
@@ -36,22 +38,8 @@ const TOLERANCE = 0.005;
  * sent and the page has drawn a frame after (a local world's steps are drawn as they are taken).
  */
 async function waitForWorkerWorld(page: Page, steps: number): Promise<void> {
-  type Gallery = {
-    gallery: { instance: { world: { stepCount?: number } }; runner: { stepsInFlight?: number } };
-  };
-  // a World has no step count of its own; a WorkerWorld counts the steps its worker finished
-  const inWorker = await page.evaluate(
-    () => typeof (window as unknown as Gallery).gallery.instance.world.stepCount === 'number',
-  );
-  if (!inWorker) return;
-  await page.waitForFunction(
-    (n) => {
-      const g = (window as unknown as Gallery).gallery;
-      return g.instance.world.stepCount === n && g.runner.stepsInFlight === 0;
-    },
-    steps,
-    { timeout: 60_000 },
-  );
+  if (!(await runsInWorker(page))) return;
+  await waitForWorkerSteps(page, steps);
   await page.evaluate(
     () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))),
   );

@@ -13,7 +13,14 @@ import { afterAll, beforeAll, describe, expect, inject, it } from 'vitest';
 import { buildStressScene } from '../../examples/demos/stress';
 import { World } from '../../src/index';
 import { type Browser, launchChromium } from './browser';
-import { openDemo, restartPaused, shootStage, stepByHand, worldToPage } from './gallery-page';
+import {
+  openDemo,
+  restartPaused,
+  shootStage,
+  stepByHand,
+  waitForWorkerSteps,
+  worldToPage,
+} from './gallery-page';
 import { GALLERY_DIR } from './global-setup';
 import { inkStats } from './png';
 
@@ -53,18 +60,6 @@ function readBodies(page: Page): Promise<{ step: number; xy: number[] }> {
     for (const body of world.bodies) xy.push(body.position.x, body.position.y);
     return { step: world.stepCount, xy };
   });
-}
-
-/** Waits until the worker has finished every step sent, `steps` of them since the demo started. */
-async function waitForWorkerSteps(page: Page, steps: number): Promise<void> {
-  await page.waitForFunction(
-    (n) => {
-      const g = (window as unknown as WorkerGallery).gallery;
-      return g.instance.world.stepCount === n && g.runner.stepsInFlight === 0;
-    },
-    steps,
-    { timeout: 60_000 },
-  );
 }
 
 function readState(page: Page): Promise<DemoState & { steps: number }> {

@@ -1,4 +1,4 @@
-import { afterEach, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { type Body, Shape, World } from '../../src/index';
 import type { Transform, Vec2 } from '../../src/math/vec2';
 import {
@@ -9,8 +9,8 @@ import {
 } from '../../src/render/debug-draw';
 import type { AnyWorld, ShapeStyle } from '../../src/render/index';
 import { Interpolator } from '../../src/render/interpolation';
-import { type WorkerBody, WorkerWorld } from '../../src/worker/index';
-import { workerScript } from '../helpers/worker-script';
+import type { WorkerBody } from '../../src/worker/index';
+import { workerWorlds } from '../helpers/worker-script';
 import { runProgram } from './scene';
 
 /*
@@ -20,17 +20,7 @@ import { runProgram } from './scene';
  * source reads nothing of an engine on this thread.
  */
 
-const opened: WorkerWorld[] = [];
-
-async function open(): Promise<WorkerWorld> {
-  const world = await WorkerWorld.create({ worker: { url: workerScript() } });
-  opened.push(world);
-  return world;
-}
-
-afterEach(() => {
-  for (const world of opened.splice(0)) world.terminate();
-});
+const { open } = workerWorlds();
 
 const xfBits = (xf: Transform) => [xf.p.x, xf.p.y, xf.q.c, xf.q.s];
 const styleBits = (s: ShapeStyle) => [s.fill ?? -1, s.fillAlpha, s.stroke];

@@ -1,8 +1,8 @@
-import { afterEach, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { FulcrumError, Shape, World } from '../../src/index';
 import { Runner } from '../../src/render/runner';
-import { WorkerWorld } from '../../src/worker/index';
-import { workerScript } from '../helpers/worker-script';
+import type { WorkerWorld } from '../../src/worker/index';
+import { workerWorlds } from '../helpers/worker-script';
 
 /*
  * fulcrum/render's Runner with a WorkerWorld, driven by tick(now) as the tests of the browser loop
@@ -12,17 +12,7 @@ import { workerScript } from '../helpers/worker-script';
 
 const DT = 1 / 60;
 const FRAME = 1000 * DT;
-const opened: WorkerWorld[] = [];
-
-async function open(): Promise<WorkerWorld> {
-  const world = await WorkerWorld.create({ worker: { url: workerScript() } });
-  opened.push(world);
-  return world;
-}
-
-afterEach(() => {
-  for (const world of opened.splice(0)) world.terminate();
-});
+const { open } = workerWorlds();
 
 /** A ball 10 m up, in a World or a WorkerWorld. */
 function drop<W extends World | WorkerWorld>(world: W) {

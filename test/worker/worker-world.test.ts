@@ -1,7 +1,7 @@
-import { afterEach, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { type Body, FulcrumError, Shape, type ShapeHandle, stateHash, World } from '../../src/index';
-import { type WorkerBody, type WorkerShape, WorkerWorld, type WorkerWorldDef } from '../../src/worker/index';
-import { workerScript } from '../helpers/worker-script';
+import { type WorkerBody, type WorkerShape, WorkerWorld } from '../../src/worker/index';
+import { workerScript, workerWorlds } from '../helpers/worker-script';
 import { type BodyLike, runProgram } from './scene';
 
 /*
@@ -9,17 +9,7 @@ import { type BodyLike, runProgram } from './scene';
  * errors. The worker runs a bundle of the same source (test/helpers/worker-script.ts).
  */
 
-const opened: WorkerWorld[] = [];
-
-async function open(def: WorkerWorldDef = {}): Promise<WorkerWorld> {
-  const world = await WorkerWorld.create({ ...def, worker: { url: workerScript(), ...def.worker } });
-  opened.push(world);
-  return world;
-}
-
-afterEach(() => {
-  for (const world of opened.splice(0)) world.terminate();
-});
+const { open, keep } = workerWorlds();
 
 /** Every number a body reads, exactly. */
 function reads(body: BodyLike): number[] {
@@ -238,7 +228,7 @@ describe('WorkerWorld snapshots', () => {
     const bodies = await runProgram<WorkerBody>(first, 100);
     const bytes = await first.snapshot();
     const second = await WorkerWorld.restore(bytes, { url: workerScript(), buffers: 'transfer' });
-    opened.push(second);
+    keep(second);
     const local = World.restore(bytes);
     expect(second.bodyCount).toBe(first.bodyCount);
     expect(second.joints.length).toBe(first.joints.length);
