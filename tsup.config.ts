@@ -27,6 +27,13 @@ export default defineConfig([
     treeshake: true,
   },
   {
+    entry: { 'solver-worker': 'src/parallel/solver-worker.ts' },
+    format: ['esm'],
+    sourcemap: false,
+    minify: true,
+    target: 'es2022',
+  },
+  {
     entry: { fulcrum: 'src/global.ts' },
     format: ['iife'],
     globalName: 'Fulcrum',

@@ -12,6 +12,8 @@ export interface EngineAdapter {
   init(): Promise<void>;
   /** builds `scene` in a fresh world with sleeping off; replaces any previous world */
   build(scene: Scene): void;
+  /** resolves once the world just built can step at full speed (its threads started), if it needs to wait */
+  ready?(): Promise<void>;
   /** advances the world by dt seconds */
   step(dt: number): void;
   /**

@@ -26,6 +26,25 @@ export function importBundledFulcrumMatter(): Promise<typeof import('./adapters/
   return importBundled('./adapters/fulcrum-matter.ts');
 }
 
+/**
+ * The solver workers' script (src/parallel/solver-worker.ts) bundled the same way, for a world with
+ * `workers`: written once per process and removed when it exits.
+ */
+export function bundledSolverWorker(): URL {
+  const outfile = join(tmpdir(), `fulcrum-bench-solver-${process.pid}.mjs`);
+  execFileSync(esbuild, [
+    fileURLToPath(new URL('../src/parallel/solver-worker.ts', import.meta.url)),
+    '--bundle',
+    '--format=esm',
+    '--platform=node',
+    '--target=es2022',
+    `--outfile=${outfile}`,
+    '--log-level=error',
+  ]);
+  process.once('exit', () => rmSync(outfile, { force: true }));
+  return pathToFileURL(outfile);
+}
+
 async function importBundled<T>(relative: string): Promise<T> {
   const adapterPath = fileURLToPath(new URL(relative, import.meta.url));
   const outfile = join(tmpdir(), `fulcrum-bench-${process.pid}.mjs`);

@@ -1,6 +1,6 @@
 /** The engines the benchmark knows, how to load each adapter, and which npm package it measures. */
 import type { EngineAdapter } from './adapter';
-import { importBundledFulcrum, importBundledFulcrumMatter } from './bundle';
+import { bundledSolverWorker, importBundledFulcrum, importBundledFulcrumMatter } from './bundle';
 
 export interface EngineEntry {
   id: string;
@@ -16,6 +16,12 @@ export const engines: EngineEntry[] = [
     label: 'Fulcrum',
     pkg: null,
     load: async () => new (await importBundledFulcrum()).FulcrumAdapter(),
+  },
+  {
+    id: 'fulcrum-2w',
+    label: 'Fulcrum, 2 threads',
+    pkg: null,
+    load: async () => new (await importBundledFulcrum()).FulcrumAdapter(2, bundledSolverWorker()),
   },
   {
     id: 'box2d3',

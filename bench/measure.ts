@@ -90,6 +90,7 @@ export async function measure(
   let jitSteps = 0;
   try {
     adapter.build(builder(quick));
+    await adapter.ready?.();
     const until = performance.now() + plan.jitMs;
     while (jitSteps < COLD_STEPS || (jitSteps < plan.jitSteps && performance.now() < until)) {
       const t0 = performance.now();
@@ -123,6 +124,7 @@ export async function measure(
   clock.jitWarmed = performance.now();
   try {
     adapter.build(scene);
+    await adapter.ready?.();
   } catch (error) {
     return { ...base, stage: 'build', error: message(error) };
   }

@@ -8,13 +8,31 @@ import type { Scene } from '../../scenes/types';
 import type { EngineAdapter } from '../adapter';
 
 export class FulcrumAdapter implements EngineAdapter {
-  readonly settings = 'defaults (subSteps 4, continuous on), enableSleep false, bundled by esbuild';
+  readonly settings: string;
   private built: FulcrumScene | null = null;
+
+  /** `workers` > 1: `new World({ workers })`, its workers running the script at `workerUrl` */
+  constructor(
+    private readonly workers = 1,
+    private readonly workerUrl?: URL,
+  ) {
+    const threads = workers > 1 ? `, workers ${workers}` : '';
+    this.settings = `defaults (subSteps 4, continuous on)${threads}, enableSleep false, bundled by esbuild`;
+  }
 
   async init(): Promise<void> {}
 
   build(scene: Scene): void {
-    this.built = buildFulcrumWorld(scene, { enableSleep: false });
+    this.dispose();
+    const def = this.workers > 1 ? { workers: this.workers, workerUrl: this.workerUrl } : {};
+    this.built = buildFulcrumWorld(scene, { enableSleep: false, ...def });
+  }
+
+  /** waits until the world's workers run (a team starts asynchronously) */
+  async ready(): Promise<void> {
+    if (this.built === null || this.workers === 1) return;
+    const threads = await this.built.world.workersReady;
+    if (threads !== this.workers) throw new Error(`${threads} threads started, not ${this.workers}`);
   }
 
   step(dt: number): void {
@@ -32,6 +50,7 @@ export class FulcrumAdapter implements EngineAdapter {
   }
 
   dispose(): void {
+    this.built?.world.dispose();
     this.built = null;
   }
 }

@@ -12,7 +12,7 @@ import { fileURLToPath } from 'node:url';
 const esbuild = createRequire(import.meta.url).resolve('esbuild/bin/esbuild');
 
 export interface PageBundle {
-  /** holds page.js and its chunks */
+  /** holds page.js, solver-worker.js and their chunks */
   dir: string;
   remove(): void;
 }
@@ -21,12 +21,16 @@ export function bundlePage(): PageBundle {
   const dir = mkdtempSync(join(tmpdir(), 'fulcrum-browser-bench-'));
   execFileSync(esbuild, [
     fileURLToPath(new URL('./page.ts', import.meta.url)),
+    // the script of the workers of Fulcrum's two-thread world (fulcrum-2w), served beside the page
+    fileURLToPath(new URL('../../src/parallel/solver-worker.ts', import.meta.url)),
     '--bundle',
     '--splitting',
     '--format=esm',
     '--platform=browser',
     '--target=es2022',
     `--outdir=${dir}`,
+    // both at the top of the directory, though their sources live apart
+    '--entry-names=[name]',
     '--log-level=error',
   ]);
   return { dir, remove: () => rmSync(dir, { recursive: true, force: true }) };

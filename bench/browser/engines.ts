@@ -8,6 +8,12 @@ import type { EngineAdapter } from '../adapter';
 
 export const browserEngines: Record<string, () => Promise<EngineAdapter>> = {
   fulcrum: async () => new (await import('../adapters/fulcrum')).FulcrumAdapter(),
+  // the chunk this runs in is served beside solver-worker.js (bench/browser/bundle.ts)
+  'fulcrum-2w': async () =>
+    new (await import('../adapters/fulcrum')).FulcrumAdapter(
+      2,
+      new URL('./solver-worker.js', import.meta.url),
+    ),
   box2d3: async () => new (await import('../adapters/box2d3')).Box2dAdapter('compat'),
   'box2d3-simd': async () => new (await import('../adapters/box2d3')).Box2dAdapter('deluxe'),
   rapier: async () => new (await import('../adapters/rapier')).RapierAdapter(),

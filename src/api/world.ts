@@ -15,6 +15,7 @@ import type { JointType, JointTypes } from '../joints/registry';
 import type { AABB } from '../math/aabb';
 import { makeRotInto } from '../math/rot';
 import type { Rot, Vec2 } from '../math/vec2';
+import type { SolverTeam } from '../parallel/team';
 import type { CastHit, QueryFilter, QueryTransform } from '../query/index';
 import * as queries from '../query/index';
 import { BodyFlag, BodyKind, BodyState } from '../store/body-store';
@@ -35,6 +36,14 @@ export interface WorldDef {
   lengthUnitsPerMeter?: number;
   /** how a contact's friction comes from its two shapes': 'geometric' (default) sqrt(a * b), 'min' the smaller */
   frictionMixing?: FrictionMixing;
+  /**
+   * threads that solve each step's contacts, the calling one included (default 1): `workers - 1`
+   * workers share the contact columns through SharedArrayBuffer. Same bits as one thread. Where
+   * SharedArrayBuffer is missing (a page not cross-origin isolated) the world steps on one thread.
+   */
+  workers?: number;
+  /** the workers' script: by default the package's `solver-worker.js`, beside the engine's files */
+  workerUrl?: URL | string;
 }
 
 export type FrictionMixing = 'geometric' | 'min';
@@ -54,6 +63,8 @@ const WORLD_DEF_KEYS = [
   'enableContinuous',
   'lengthUnitsPerMeter',
   'frictionMixing',
+  'workers',
+  'workerUrl',
 ] as const;
 
 /** A physics world: bodies, their shapes, contacts and the step that moves them. */
@@ -64,6 +75,11 @@ export class World {
   readonly handles: WorldHandles;
   /** a new body's rotation as createBody works it out (a # field: no property key, so no snapshot) */
   readonly #rot: Rot = { c: 1, s: 0 };
+  /** the threads solving with this one, once started */
+  #team: SolverTeam | null = null;
+  #disposed = false;
+  /** see workersReady (a # field: no property key, so no snapshot) */
+  readonly #workersReady: Promise<number>;
 
   constructor(def: WorldDef = {}) {
     if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
@@ -80,6 +96,10 @@ export class World {
         : checkRange('lengthUnitsPerMeter', def.lengthUnitsPerMeter, Limits.MIN_UNITS, Limits.MAX_UNITS);
     const frictionMixing =
       def.frictionMixing === undefined ? 'geometric' : checkFrictionMixing(def.frictionMixing);
+    const workers = def.workers === undefined ? 1 : checkInteger('workers', def.workers, 1, 64);
+    const workerUrl = def.workerUrl;
+    if (workerUrl !== undefined && typeof workerUrl !== 'string' && !(workerUrl instanceof URL))
+      fail('workerUrl', workerUrl, 'a URL or a string');
     this.core = new WorldCore(units);
     this.handles = new WorldHandles(this.core);
     this.core.gravityX = gravity.x;
@@ -88,6 +108,53 @@ export class World {
     this.core.enableSleep = enableSleep;
     this.core.enableContinuous = enableContinuous;
     this.core.frictionMin = frictionMixing === 'min';
+    this.#workersReady =
+      workers > 1 && typeof SharedArrayBuffer === 'function'
+        ? this.#startTeam(workers, workerUrl)
+        : Promise.resolve(1);
+    // a world whose workers failed steps on one thread: that is not an unhandled error of the program
+    this.#workersReady.catch(() => {});
+  }
+  /**
+   * Resolves with the number of threads that solve the steps once the workers have started (1 when
+   * `workers` is 1 or SharedArrayBuffer is missing); rejects if they could not start, and the world
+   * then steps on one thread. Steps taken before are the same bits, on one thread.
+   */
+  get workersReady(): Promise<number> {
+    return this.#workersReady;
+  }
+
+  async #startTeam(threads: number, url: URL | string | undefined): Promise<number> {
+    // loaded only by worlds that ask for workers: one thread's users do not carry it
+    const { SolverTeam } = await import('../parallel/team');
+    let team: SolverTeam;
+    try {
+      team = await SolverTeam.start(threads, url);
+    } catch (error) {
+      throw new FulcrumError(`the world's ${threads - 1} solver workers could not start: ${error}`, {
+        cause: error,
+      });
+    }
+    if (this.#disposed) {
+      team.stop();
+      return 1;
+    }
+    this.#team = team;
+    this.core.team = team;
+    return team.threads;
+  }
+
+  /** threads solving the steps now: `workers` once they have started, else 1 */
+  get workers(): number {
+    return this.#team === null ? 1 : this.#team.threads;
+  }
+
+  /** Ends the world's workers (`workers`); it steps on one thread from then on. */
+  dispose(): void {
+    this.#disposed = true;
+    this.#team?.stop();
+    this.#team = null;
+    this.core.team = null;
   }
 
   get gravity(): Vec2 {

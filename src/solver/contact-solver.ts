@@ -91,15 +91,15 @@ const SUPPORT_COSINE = 0.5;
 export class ContactConstraints {
   count = 0;
   capacity = 0;
-  data = new Float64Array(0);
-  restitution = new Float64Array(0);
+  data: Float64Array = new Float64Array(0);
+  restitution: Float64Array = new Float64Array(0);
   /** body A, body B and contact slot of each constraint */
-  ids = new Int32Array(0);
+  ids: Int32Array = new Int32Array(0);
   /**
    * bias rate, mass scale, impulse scale and compliance (impulse / mass scale) of the contact
    * softness at each load level, then of the anchored softness at each level (4 values each)
    */
-  readonly softness = new Float64Array(8 * LOAD_LEVELS);
+  softness: Float64Array = new Float64Array(8 * LOAD_LEVELS);
   /** the substep `softness` was set for (see setContactSoftness) */
   softnessStep = Number.NaN;
   /** the highest level below the limit of setSoftness in `softness`, of the contact and the anchored softness */
@@ -342,10 +342,15 @@ export function prepareContacts(
 }
 
 /** @internal Applies the impulses kept from the previous substep (or step) so the solver starts near the answer. */
-export function warmStartContacts(cc: ContactConstraints, state: Float64Array): void {
+export function warmStartContacts(
+  cc: ContactConstraints,
+  state: Float64Array,
+  from: number,
+  to: number,
+): void {
   const d = cc.data;
   const ids = cc.ids;
-  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
+  for (let i = from, n = to & IndexBound.MAX; i < n; i++) {
     const base = i * ContactField.STRIDE;
     const sa = (ids[i * 3] & IndexBound.MAX) * BodyState.STRIDE;
     const sb = (ids[i * 3 + 1] & IndexBound.MAX) * BodyState.STRIDE;
@@ -396,7 +401,7 @@ export function warmStartContacts(cc: ContactConstraints, state: Float64Array): 
 }
 
 /**
- * One Gauss-Seidel pass over all contacts. With `useBias` the soft constraint pushes overlapping
+ * One Gauss-Seidel pass over the constraints from `from` to `to`. With `useBias` the soft constraint pushes overlapping
  * shapes apart (at most `maxPushSpeed`); without it (relax pass) only velocities are made consistent,
  * which removes the energy the push added. The two points of a manifold are solved together as a
  * 2x2 block (a small LCP, by trying its four cases), so neither point is favoured by the order of
@@ -409,11 +414,13 @@ export function solveContacts(
   invH: number,
   useBias: boolean,
   maxPushSpeed: number,
+  from: number,
+  to: number,
 ): void {
   const d = cc.data;
   const ids = cc.ids;
   const soft = cc.softness;
-  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
+  for (let i = from, n = to & IndexBound.MAX; i < n; i++) {
     const base = i * ContactField.STRIDE;
     const sa = (ids[i * 3] & IndexBound.MAX) * BodyState.STRIDE;
     const sb = (ids[i * 3 + 1] & IndexBound.MAX) * BodyState.STRIDE;
@@ -959,10 +966,16 @@ export function solveSupports(cc: ContactConstraints, state: Float64Array, invH:
  * impulse get a normal velocity of -restitution times their approach velocity.
  * @internal
  */
-export function applyRestitution(cc: ContactConstraints, state: Float64Array, threshold: number): void {
+export function applyRestitution(
+  cc: ContactConstraints,
+  state: Float64Array,
+  threshold: number,
+  from: number,
+  to: number,
+): void {
   const d = cc.data;
   const ids = cc.ids;
-  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
+  for (let i = from, n = to & IndexBound.MAX; i < n; i++) {
     const base = i * ContactField.STRIDE;
     const rBase = i * RestitutionField.STRIDE;
     const restitution = cc.restitution[rBase + RestitutionField.RESTITUTION];

@@ -1,6 +1,7 @@
 import { growI32, growU32 } from '../core/grow';
 
-const COLORS = 32;
+/** @internal */
+export const COLORS = 32;
 const OVERFLOW = COLORS;
 
 /**
@@ -33,6 +34,11 @@ export class GraphColoring {
   private round = 0;
   /** contact slots in colour order, valid after finish() */
   order = new Int32Array(0);
+
+  /** Where colour `c`'s contacts end in `order` (after finish(); colour COLORS is the overflow's). */
+  colorEnd(c: number): number {
+    return this.starts[c];
+  }
 
   begin(bodyCapacity: number, maxCount: number): void {
     if (this.bodyColors.length < bodyCapacity) this.bodyColors = growU32(this.bodyColors, bodyCapacity);

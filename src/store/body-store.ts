@@ -50,7 +50,7 @@ export class BodyStore extends SlotStore {
   flags = new Uint8Array(0);
   /** counts the changes of any body's AWAKE flag after its creation (sleep, wake, type changes) */
   awakeEpoch = 0;
-  state = new Float64Array(0);
+  state: Float64Array = new Float64Array(0);
   // origin transform
   px = new Float64Array(0);
   py = new Float64Array(0);

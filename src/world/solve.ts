@@ -203,10 +203,10 @@ function solveFineIslands(core: WorldCore, dt: number, subSteps: number, factor:
   prepareVelocityUpdate(bodies, fine.bodies, fine.count, h, core.gravityX, core.gravityY, fine.update);
   for (let i = 0; i < subSteps; i++) {
     integrateVelocities(bodies, fine.bodies, fine.count, fine.update, h, settings.maxLinearSpeed);
-    warmStartContacts(cc, state);
-    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
+    warmStartContacts(cc, state, 0, cc.count);
+    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed, 0, cc.count);
     integratePositions(bodies, fine.bodies, fine.count, h, settings.maxLinearSpeed, i === subSteps - 1);
-    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
+    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed, 0, cc.count);
     solveSupports(cc, state, invH);
   }
   restoreFineConstraints(core.constraints, cc, factor);
@@ -221,9 +221,13 @@ export function solve(core: WorldCore, dt: number): void {
   const subSteps = core.subSteps;
   const h = dt / subSteps;
   const invH = 1 / h;
+  const settings = core.settings;
   const ctx = core.jointContext;
   const tree = core.jointTree;
   const hinges = core.hingeBatch;
+  const team = core.team;
+  // before the joints take the body columns: the team may move them into shared memory
+  if (team !== null) team.shareBodies(core.bodies);
   prepareJoints(core, h);
   const treeBias = ctx.jointSoftness.biasRate;
   // the joints the tree alone solves are not warm started (see JointTree.project)
@@ -235,10 +239,14 @@ export function solve(core: WorldCore, dt: number): void {
   const bodies = core.bodies;
   const state = bodies.state;
   const cc = core.constraints;
+  // Contacts of one colour share no body that contacts move, so the team solves a colour's contacts
+  // on several threads at once with the same arithmetic in the same order per body: the same bits.
+  // Islands stepped finer take their constraints out of the colour order: those steps stay on one thread.
+  const shared = team !== null && fineFactor === 1 && team.begin(cc, core.coloring);
+  const pushSpeed = settings.contactPushMaxSpeed;
   // the bodies and constraints stepped here: all but those of the islands stepped finer
   const awake = fineFactor > 1 ? core.fineIslands.coarse : core.awake;
   const awakeCount = fineFactor > 1 ? core.fineIslands.coarseCount : core.awakeCount;
-  const settings = core.settings;
   // the tree projects again after the others only if they act on its bodies
   const coupled = tree.isCoupled(cc.ids, cc.count);
   if (core.velocityUpdate.length < awakeCount * VelocityUpdate.STRIDE)
@@ -249,14 +257,16 @@ export function solve(core: WorldCore, dt: number): void {
     integrateVelocities(bodies, awake, awakeCount, update, h, settings.maxLinearSpeed);
     hinges.warmStart(state, ctx.warmSpeedLimit, ctx.warmTurnLimit);
     for (let j = 0; j < iterativeCount; j++) iterative[j].warmStartGuarded(ctx);
-    warmStartContacts(cc, state);
+    if (shared) team.warmStart();
+    else warmStartContacts(cc, state, 0, cc.count);
     // positions change only in integratePositions: the last substep's relax factorization still holds
     if (i === 0) tree.factor(ctx, true, false);
     tree.project(state, treeBias, true);
     hinges.solve(state, jointSoft, ctx.jointPushMaxSpeed);
     tree.solveAxials(ctx, true);
     for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, true);
-    solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed);
+    if (shared) team.solve(invH, true, pushSpeed);
+    else solveContacts(cc, state, invH, true, pushSpeed, 0, cc.count);
     if (coupled) tree.project(state, treeBias, false);
     integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed, i === subSteps - 1);
     tree.factor(ctx, false, i === subSteps - 1);
@@ -268,14 +278,16 @@ export function solve(core: WorldCore, dt: number): void {
     hinges.relax(state, i === subSteps - 1);
     tree.solveAxials(ctx, false);
     for (let j = 0; j < iterativeCount; j++) iterative[j].solve(ctx, false);
-    solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed);
+    if (shared) team.solve(invH, false, pushSpeed);
+    else solveContacts(cc, state, invH, false, pushSpeed, 0, cc.count);
     if (coupled) tree.project(state, 0, false);
     if (cc.supportCount > 0) solveSupports(cc, state, invH);
   }
   if (fineFactor > 1) solveFineIslands(core, dt, fineFactor * subSteps, fineFactor);
   hinges.store(ctx);
   tree.store(ctx);
-  applyRestitution(cc, state, settings.restitutionThreshold);
+  if (shared) team.restitution(settings.restitutionThreshold);
+  else applyRestitution(cc, state, settings.restitutionThreshold, 0, cc.count);
   const contacts = core.contacts;
   storeImpulses(
     cc,

@@ -18,6 +18,7 @@ import { makeBounds } from '../math/aabb';
 import type { Transform } from '../math/vec2';
 import { CollideContext } from '../narrow-phase/collide-context';
 import { ContactConstraints } from '../solver/contact-solver';
+import type { ContactTeam } from '../solver/contact-team';
 import { FineIslands } from '../solver/fine-islands';
 import { GraphColoring } from '../solver/graph-color';
 import { Anchor, HingeBatch, HingeField } from '../solver/hinge-batch';
@@ -129,6 +130,8 @@ export class WorldCore implements PairFilter {
   frictionMin = false;
   hitEventThreshold = 1;
   locked = false;
+  /** the threads that solve the contacts with this one (a # field: not a property, so no snapshot) */
+  #team: ContactTeam | null = null;
   /** joints in creation order, and each body's joints */
   readonly joints: SolverJoint[] = [];
   readonly bodyJoints: (SolverJoint[] | undefined)[] = [];
@@ -186,6 +189,14 @@ export class WorldCore implements PairFilter {
   /** the body transform refreshShapeBounds passes (an object: doubles passed to a call are boxed) */
   readonly xfBounds: Transform = makeScratchTransform();
   readonly work = new WorkingMemory();
+
+  get team(): ContactTeam | null {
+    return this.#team;
+  }
+
+  set team(team: ContactTeam | null) {
+    this.#team = team;
+  }
 
   constructor(lengthUnitsPerMeter: number) {
     this.settings = makeSettings(lengthUnitsPerMeter);

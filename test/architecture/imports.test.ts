@@ -24,6 +24,8 @@ const LAYERS: Record<string, readonly string[]> = {
   store: ['core', 'math', 'geometry', 'broad-phase'],
   solver: ['core', 'math', 'geometry', 'broad-phase', 'store'],
   world: ['core', 'math', 'geometry', 'broad-phase', 'narrow-phase', 'store', 'solver'],
+  // the threads of a multi-core step: the contact passes and the columns they share
+  parallel: ['core', 'math', 'geometry', 'broad-phase', 'store', 'solver'],
   api: [
     'core',
     'math',
@@ -33,6 +35,7 @@ const LAYERS: Record<string, readonly string[]> = {
     'store',
     'solver',
     'world',
+    'parallel',
     'joints',
     'query',
   ],

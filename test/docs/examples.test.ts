@@ -43,6 +43,16 @@ describe('docs examples', () => {
     expect(result.y).toBeLessThan(2.5);
   });
 
+  it('workers: a pyramid stepped by two threads is bit for bit the one stepped by one', async () => {
+    const { pyramidOnTwoThreads } = await import('../../docs/examples/workers-step');
+    const { workerScript } = await import('../helpers/worker-script');
+    const result = await pyramidOnTwoThreads(workerScript('test/worker/fixtures/solver-source-entry.mjs'));
+    expect(result.threads).toBe(2);
+    expect(result.same).toBe(true);
+    // the ground and 40 + 39 + ... + 1 boxes
+    expect(result.bodies).toBe(1 + (40 * 41) / 2);
+  });
+
   it('hello world: the ball comes to rest on the ground, half a metre up', async () => {
     const { ball, touches } = await import('../../docs/examples/hello-world');
     expect(ball.position.x).toBe(0);

@@ -1,0 +1,153 @@
+import { FulcrumError } from '../core/errors';
+import {
+  applyRestitution,
+  type ContactConstraints,
+  solveContacts,
+  warmStartContacts,
+} from '../solver/contact-solver';
+import { COLORS } from '../solver/graph-color';
+
+/*
+ * The control block a team's threads share (an Int32Array on a SharedArrayBuffer) and the code both
+ * sides run: the calling thread is thread 0 and runs its share of a pass with the same code as the
+ * workers. Enums, not consts, for the reason given in body-store.ts.
+ */
+
+/** @internal Int32 fields of the control block. */
+export enum Control {
+  /** counts the passes handed out: a worker waits for it to change */
+  EPOCH = 0,
+  /** the pass handed out last (a Pass) */
+  PASS = 1,
+  /** the barrier: threads arrived, and its generation */
+  ARRIVED = 2,
+  GENERATION = 3,
+  /** phases in the plan */
+  PHASES = 4,
+  /** the plan: per phase, threads + 1 constraint indices, thread t solving from the t-th to the next */
+  PLAN = 8,
+}
+
+/** @internal Float64 fields of the parameter block. */
+export enum Param {
+  INV_H = 0,
+  MAX_PUSH_SPEED = 1,
+  THRESHOLD = 2,
+  USE_BIAS = 3,
+  SIZE = 4,
+}
+
+/** @internal What a worker is asked to do. */
+export enum Pass {
+  WARM_START = 0,
+  SOLVE = 1,
+  RESTITUTION = 2,
+  /** go back to the event loop and take the columns posted to it (they were moved or grown) */
+  BIND = 3,
+  STOP = 4,
+}
+
+/** @internal the most phases a plan has: a colour each and the overflow */
+export const MAX_PHASES = COLORS + 1;
+
+/** @internal the control block's length in Int32 for `threads` threads */
+export function controlLength(threads: number): number {
+  return Control.PLAN + MAX_PHASES * (threads + 1);
+}
+
+/** spins at a barrier between looks at the clock */
+const SPINS_BETWEEN_CLOCKS = 1 << 22;
+/** how long a thread waits at a barrier for the others before it gives up */
+const BARRIER_PATIENCE_MS = 5000;
+/** spins of a waiting thread before it sleeps (Atomics.wait) */
+const SPINS_BEFORE_SLEEP = 1 << 14;
+
+/**
+ * @internal Waits until every thread has arrived. Spins first: a pass's phases last microseconds,
+ * less than a sleeping thread takes to wake. Then, where the thread may block (`canSleep`: not a
+ * browser page's main thread), sleeps a millisecond at a time, so that a thread the system has not
+ * given a core yet gets one. The generation is read before arriving, so a thread cannot miss the
+ * round it arrives in.
+ */
+export function barrier(control: Int32Array, threads: number, canSleep: boolean): void {
+  const generation = Atomics.load(control, Control.GENERATION);
+  if (Atomics.add(control, Control.ARRIVED, 1) === threads - 1) {
+    Atomics.store(control, Control.ARRIVED, 0);
+    Atomics.add(control, Control.GENERATION, 1);
+    Atomics.notify(control, Control.GENERATION);
+    return;
+  }
+  let spins = 0;
+  let deadline = 0;
+  while (Atomics.load(control, Control.GENERATION) === generation) {
+    if (++spins < SPINS_BEFORE_SLEEP) continue;
+    if (canSleep) Atomics.wait(control, Control.GENERATION, generation, 1);
+    else if (spins < SPINS_BETWEEN_CLOCKS) continue;
+    // a thread that died or hangs would hold the others here for good
+    spins = 0;
+    const now = Date.now();
+    if (deadline === 0) deadline = now + BARRIER_PATIENCE_MS;
+    else if (now > deadline) {
+      throw new FulcrumError(
+        `a thread of the world's team did not reach a barrier within ${BARRIER_PATIENCE_MS} ms: the step cannot finish`,
+      );
+    }
+  }
+}
+
+/** @internal A worker's wait for the next pass after `seen`: spins a while, then sleeps. */
+export function awaitPass(control: Int32Array, seen: number): number {
+  for (let i = 0; i < SPINS_BEFORE_SLEEP; i++) {
+    const epoch = Atomics.load(control, Control.EPOCH);
+    if (epoch !== seen) return epoch;
+  }
+  Atomics.wait(control, Control.EPOCH, seen);
+  return Atomics.load(control, Control.EPOCH);
+}
+
+/** @internal Runs thread `thread`'s share of every phase of the pass, with a barrier after each. */
+export function runPass(
+  pass: Pass,
+  control: Int32Array,
+  params: Float64Array,
+  cc: ContactConstraints,
+  state: Float64Array,
+  thread: number,
+  threads: number,
+  canSleep: boolean,
+): void {
+  const phases = control[Control.PHASES];
+  const stride = threads + 1;
+  for (let p = 0; p < phases; p++) {
+    const at = Control.PLAN + p * stride + thread;
+    const from = control[at];
+    const to = control[at + 1];
+    if (from < to) {
+      if (pass === Pass.SOLVE) {
+        solveContacts(
+          cc,
+          state,
+          params[Param.INV_H],
+          params[Param.USE_BIAS] === 1,
+          params[Param.MAX_PUSH_SPEED],
+          from,
+          to,
+        );
+      } else if (pass === Pass.WARM_START) {
+        warmStartContacts(cc, state, from, to);
+      } else {
+        applyRestitution(cc, state, params[Param.THRESHOLD], from, to);
+      }
+    }
+    barrier(control, threads, canSleep);
+  }
+}
+
+/** @internal The columns a worker solves on, as posted to it. */
+export interface TeamColumns {
+  state: Float64Array;
+  data: Float64Array;
+  ids: Int32Array;
+  softness: Float64Array;
+  restitution: Float64Array;
+}

@@ -1,0 +1,86 @@
+/**
+ * The script a world's team starts in each of its workers (`new World({ workers })`): it waits for a
+ * pass, solves its share of every colour of it on the shared columns, and waits again. Runs on Node's
+ * worker_threads (its parentPort) and in a Web Worker (its global scope).
+ * @module
+ */
+
+import { ContactConstraints } from '../solver/contact-solver';
+import { awaitPass, barrier, Control, Pass, runPass, type TeamColumns } from './control';
+
+/** @internal The first message a worker gets. */
+export interface TeamStart {
+  control: Int32Array;
+  params: Float64Array;
+  thread: number;
+  threads: number;
+}
+
+/** @internal The messages a worker gets: its start, then the columns each time they move. */
+export type TeamMessage = { start: TeamStart } | { columns: TeamColumns };
+
+interface Port {
+  postMessage(message: unknown): void;
+}
+
+function serve(port: Port): (message: TeamMessage) => void {
+  let start: TeamStart | null = null;
+  let state: Float64Array = new Float64Array(0);
+  const cc = new ContactConstraints();
+  let seen = 0;
+  // Runs passes until one asks for the event loop (new columns) or the end; a worker spends its life
+  // here, between passes spinning or asleep in Atomics.wait.
+  const work = (team: TeamStart): void => {
+    const { control, params, thread, threads } = team;
+    for (;;) {
+      seen = awaitPass(control, seen);
+      const pass = control[Control.PASS] as Pass;
+      if (pass === Pass.BIND || pass === Pass.STOP) return;
+      runPass(pass, control, params, cc, state, thread, threads, true);
+    }
+  };
+  return (message) => {
+    if ('start' in message) {
+      start = message.start;
+      seen = Atomics.load(start.control, Control.EPOCH);
+      port.postMessage('ready');
+      work(start);
+      return;
+    }
+    if (start === null) throw new Error('fulcrum: a solver worker got columns before its start');
+    state = message.columns.state;
+    cc.data = message.columns.data;
+    cc.ids = message.columns.ids;
+    cc.softness = message.columns.softness;
+    cc.restitution = message.columns.restitution;
+    // tells the calling thread that this worker solves on the new columns
+    barrier(start.control, start.threads, true);
+    work(start);
+  };
+}
+
+interface WebWorkerScope extends Port {
+  onmessage: ((event: { data: TeamMessage }) => void) | null;
+}
+
+interface NodeParentPort extends Port {
+  on(event: 'message', listener: (message: TeamMessage) => void): void;
+}
+
+function main(): void {
+  const scope = globalThis as unknown as { WorkerGlobalScope?: unknown } & WebWorkerScope;
+  if (typeof scope.WorkerGlobalScope === 'function' && scope instanceof (scope.WorkerGlobalScope as never)) {
+    const handle = serve(scope);
+    scope.onmessage = (event) => handle(event.data);
+    return;
+  }
+  // Node: a specifier in a variable, so that bundlers for the browser leave it alone
+  const threads = 'node:worker_threads';
+  import(/* @vite-ignore */ threads).then((module: { parentPort: NodeParentPort | null }) => {
+    const port = module.parentPort;
+    if (port === null) throw new Error('fulcrum: solver-worker runs in a worker, not on the main thread');
+    port.on('message', serve(port));
+  });
+}
+
+main();

@@ -1,0 +1,223 @@
+import type { ContactConstraints } from '../solver/contact-solver';
+import type { ContactTeam } from '../solver/contact-team';
+import { COLORS, type GraphColoring } from '../solver/graph-color';
+import type { BodyStore } from '../store/body-store';
+import { barrier, Control, controlLength, Param, Pass, runPass, type TeamColumns } from './control';
+import type { TeamMessage } from './solver-worker';
+import { startThread, type Thread } from './thread';
+
+/**
+ * A colour's constraints are split between the threads only from this many per thread: below it the
+ * barrier costs more than the share saves, and the calling thread solves the colour alone.
+ */
+const MIN_PER_THREAD = 64;
+/** below this many constraints in a step the team stays idle: one thread is faster */
+const MIN_CONSTRAINTS = 512;
+
+type Shareable = Float64Array | Int32Array;
+
+function mayBlock(): boolean {
+  try {
+    Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 1, 0);
+    return true;
+  } catch {
+    return false;
+  }
+}
+
+function isShared(a: Shareable): boolean {
+  return typeof SharedArrayBuffer === 'function' && a.buffer instanceof SharedArrayBuffer;
+}
+
+function sharedF64(a: Float64Array): Float64Array {
+  if (isShared(a)) return a;
+  const b = new Float64Array(new SharedArrayBuffer(a.byteLength));
+  b.set(a);
+  return b;
+}
+
+function sharedI32(a: Int32Array): Int32Array {
+  if (isShared(a)) return a;
+  const b = new Int32Array(new SharedArrayBuffer(a.byteLength));
+  b.set(a);
+  return b;
+}
+
+/**
+ * @internal The calling thread's side of a team: it moves the columns the contact passes write into
+ * shared memory (once, and again after they grow), hands each pass to the workers through the control
+ * block and runs its own share as thread 0.
+ */
+export class SolverTeam implements ContactTeam {
+  readonly threads: number;
+  private readonly control: Int32Array;
+  private readonly params: Float64Array;
+  private readonly workers: Thread[];
+  private cc: ContactConstraints | null = null;
+  private state: Float64Array = new Float64Array(0);
+  /** the columns the workers solve on */
+  private readonly bound: TeamColumns = {
+    state: new Float64Array(0),
+    data: new Float64Array(0),
+    ids: new Int32Array(0),
+    softness: new Float64Array(0),
+    restitution: new Float64Array(0),
+  };
+  private stopped = false;
+  /** whether this thread may block in Atomics.wait: a browser page's main thread may not */
+  private readonly canSleep = mayBlock();
+  /** steps whose contacts the team solved: how a test knows the workers did the work */
+  parallelSteps = 0;
+  /** the thresholds below which a colour or a step stays on this thread (tests lower them) */
+  minPerThread = MIN_PER_THREAD;
+  minConstraints = MIN_CONSTRAINTS;
+
+  private constructor(workers: Thread[], control: Int32Array, params: Float64Array) {
+    this.workers = workers;
+    this.threads = workers.length + 1;
+    this.control = control;
+    this.params = params;
+  }
+
+  /** Starts `threads - 1` workers on `url`; resolves once every one waits for passes. */
+  static async start(threads: number, url?: URL | string): Promise<SolverTeam> {
+    // written out in full, so that bundlers find the script
+    const script = url ?? new URL('./solver-worker.js', import.meta.url);
+    const control = new Int32Array(new SharedArrayBuffer(controlLength(threads) * 4));
+    const params = new Float64Array(new SharedArrayBuffer(Param.SIZE * 8));
+    const workers: Thread[] = [];
+    try {
+      for (let t = 1; t < threads; t++) workers.push(await startThread(script));
+      await Promise.all(
+        workers.map((worker, i) => {
+          const start: TeamMessage = { start: { control, params, thread: i + 1, threads } };
+          return worker.ask(start);
+        }),
+      );
+    } catch (error) {
+      for (const worker of workers) worker.end();
+      throw error;
+    }
+    return new SolverTeam(workers, control, params);
+  }
+
+  shareBodies(bodies: BodyStore): void {
+    if (this.stopped) return;
+    bodies.state = sharedF64(bodies.state);
+    this.state = bodies.state;
+  }
+
+  begin(cc: ContactConstraints, coloring: GraphColoring): boolean {
+    if (this.stopped || cc.count < this.minConstraints) return false;
+    cc.data = sharedF64(cc.data);
+    cc.ids = sharedI32(cc.ids);
+    cc.softness = sharedF64(cc.softness);
+    cc.restitution = sharedF64(cc.restitution);
+    this.cc = cc;
+    this.bind(cc);
+    this.plan(coloring);
+    this.parallelSteps++;
+    return true;
+  }
+
+  /** Posts the columns to the workers if they moved since the last step and waits until they took them. */
+  private bind(cc: ContactConstraints): void {
+    const b = this.bound;
+    if (
+      b.state === this.state &&
+      b.data === cc.data &&
+      b.ids === cc.ids &&
+      b.softness === cc.softness &&
+      b.restitution === cc.restitution
+    ) {
+      return;
+    }
+    b.state = this.state;
+    b.data = cc.data;
+    b.ids = cc.ids;
+    b.softness = cc.softness;
+    b.restitution = cc.restitution;
+    const message: TeamMessage = { columns: { ...b } };
+    for (const worker of this.workers) worker.post(message);
+    this.dispatch(Pass.BIND);
+    barrier(this.control, this.threads, this.canSleep);
+  }
+
+  /**
+   * Phases of the passes: the colours in order, each split evenly between the threads when it is large
+   * enough, else solved by this thread alone (with the small colours next to it, in order); the
+   * overflow's constraints, which may share bodies, on this thread alone, last.
+   */
+  private plan(coloring: GraphColoring): void {
+    const control = this.control;
+    const threads = this.threads;
+    const stride = threads + 1;
+    let phases = 0;
+    let alone = false;
+    let start = 0;
+    for (let c = 0; c <= COLORS; c++) {
+      const end = coloring.colorEnd(c);
+      if (end === start) continue;
+      const split = c < COLORS && end - start >= this.minPerThread * threads;
+      const at = Control.PLAN + phases * stride;
+      if (!split && alone) {
+        // this thread's phase before goes on to the end of this colour
+        control[at - stride + 1] = end;
+        for (let t = 2; t <= threads; t++) control[at - stride + t] = end;
+      } else {
+        control[at] = start;
+        for (let t = 1; t < threads; t++)
+          control[at + t] = split ? start + Math.floor(((end - start) * t) / threads) : end;
+        control[at + threads] = end;
+        phases++;
+      }
+      alone = !split;
+      start = end;
+    }
+    control[Control.PHASES] = phases;
+  }
+
+  private dispatch(pass: Pass): void {
+    this.control[Control.PASS] = pass;
+    Atomics.add(this.control, Control.EPOCH, 1);
+    Atomics.notify(this.control, Control.EPOCH);
+  }
+
+  private run(pass: Pass): void {
+    this.dispatch(pass);
+    runPass(
+      pass,
+      this.control,
+      this.params,
+      this.cc as ContactConstraints,
+      this.state,
+      0,
+      this.threads,
+      this.canSleep,
+    );
+  }
+
+  warmStart(): void {
+    this.run(Pass.WARM_START);
+  }
+
+  solve(invH: number, useBias: boolean, maxPushSpeed: number): void {
+    this.params[Param.INV_H] = invH;
+    this.params[Param.USE_BIAS] = useBias ? 1 : 0;
+    this.params[Param.MAX_PUSH_SPEED] = maxPushSpeed;
+    this.run(Pass.SOLVE);
+  }
+
+  restitution(threshold: number): void {
+    this.params[Param.THRESHOLD] = threshold;
+    this.run(Pass.RESTITUTION);
+  }
+
+  /** Ends the workers; the world steps on one thread from then on. */
+  stop(): void {
+    if (this.stopped) return;
+    this.stopped = true;
+    this.dispatch(Pass.STOP);
+    for (const worker of this.workers) worker.end();
+  }
+}
