@@ -10,8 +10,8 @@ import {
   type Vec2,
   World,
 } from '../../src/index';
-import type { WorkerBody, WorkerShape } from '../../src/worker/index';
-import { workerWorlds } from '../helpers/worker-script';
+import { type WorkerBody, type WorkerShape, WorkerWorld } from '../../src/worker/index';
+import { workerScript, workerWorlds } from '../helpers/worker-script';
 
 /*
  * The settings commands of fulcrum/worker (body damping, gravity scale, flags and mass data; shape
@@ -21,7 +21,7 @@ import { workerWorlds } from '../helpers/worker-script';
  * World's FulcrumError at the call and queue nothing.
  */
 
-const { open } = workerWorlds();
+const { open, keep } = workerWorlds();
 
 /** The joint setters of every type, as World's joint classes and WorkerJoint both have them. */
 interface JointLike {
@@ -485,5 +485,27 @@ describe('WorkerBody.getContacts', () => {
       sameBits(flat(await (R.bodies[1] as unknown as WorkerBody).getContacts(), R.shapes), expected),
     ).toBe(true);
     expect(L.bodies[1].getContacts().length).toBe(1);
+  });
+});
+
+describe('a restored WorkerWorld', () => {
+  it('reads the settings and mass data the snapshot holds, as World.restore’s world does', async () => {
+    const remote = await open();
+    // the first half of the stages: settings changed on bodies, shapes and joints
+    await run(remote as unknown as World, () => {}, 20);
+    const bytes = await remote.snapshot();
+    const local = World.restore(bytes);
+    const restored = await WorkerWorld.restore(bytes, { url: workerScript() });
+    keep(restored);
+    const localBodies = [...local.bodies];
+    const restoredBodies = [...restored.bodies];
+    expect(restoredBodies.length).toBe(localBodies.length);
+    const all = (bodies: (Body | WorkerBody)[]) =>
+      bodies.flatMap((b) => [...bodyReads(b), ...b.shapes.flatMap((s) => shapeReads(s as ShapeHandle))]);
+    expect(sameBits(all(restoredBodies), all(localBodies))).toBe(true);
+    // the values are the commands' (a crate of mass 0.5 with its rotation free, a sensor, a filter)
+    expect(restoredBodies.some((b) => b.mass === 0.5 && b.linearDamping === 3)).toBe(true);
+    expect(restoredBodies.some((b) => b.shapes.some((s) => s.isSensor))).toBe(true);
+    expect(restoredBodies.some((b) => b.shapes.some((s) => s.filter.categoryBits === 2))).toBe(true);
   });
 });
