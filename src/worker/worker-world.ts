@@ -44,8 +44,8 @@ export interface WorkerOptions {
   buffers?: 'auto' | BufferMode;
   /**
    * How long the worker may leave a request unanswered, in milliseconds, before the world fails as if
-   * the worker had crashed (default 10,000; Infinity never). It counts from the request, or from the
-   * last reply when requests queue behind one another.
+   * the worker had crashed (default 10,000; Infinity, or anything over 24 days, never). It counts from
+   * the request, or from the last reply when requests queue behind one another.
    */
   requestTimeoutMs?: number;
 }
@@ -71,6 +71,8 @@ export interface WorkerCastHit {
 
 const OPTION_KEYS = ['url', 'buffers', 'requestTimeoutMs'] as const;
 const DEFAULT_TIMEOUT_MS = 10_000;
+/** The longest delay timers take (2^31 - 1 ms, 24.8 days): a longer one fires at once. */
+const MAX_TIMER_MS = 0x7fffffff;
 const BODY_KEYS = ['bodyA', 'bodyB', 'body'] as const;
 
 /** A request waiting for its reply: `settle` reads the reply (in order, as it arrives) and ends the promise. */
@@ -321,7 +323,7 @@ export class WorkerWorld {
 
   set requestTimeoutMs(value: number) {
     this.#timeoutMs = checkTimeout('requestTimeoutMs', value);
-    if (this.#timer !== null) this.#arm();
+    if (this.#waiting.length > 0 && this.#failure === null) this.#arm();
   }
 
   /**
@@ -776,8 +778,8 @@ export class WorkerWorld {
   /** (Re)starts the count towards the request timeout. */
   #arm(): void {
     this.#disarm();
-    if (this.#timeoutMs === Number.POSITIVE_INFINITY) return;
     const ms = this.#timeoutMs;
+    if (ms > MAX_TIMER_MS) return;
     this.#timer = setTimeout(() => {
       this.#timer = null;
       this.#fail(
