@@ -11,6 +11,14 @@ import type { AnyWorld } from './draw-source';
 import { clientToCanvas, type Render } from './render';
 import { isWorkerWorld } from './source-of';
 
+/**
+ * Whether `world` is a worker world that has stopped (its worker failed, or it was terminated): its
+ * commands throw, so a drag in it ends quietly rather than throw out of a DOM event handler.
+ */
+function stopped(world: AnyWorld): boolean {
+  return isWorkerWorld(world) && world.failure !== null;
+}
+
 /** The body handle of a world type: a World's Body, a WorkerWorld's WorkerBody. */
 export type BodyOf<W extends AnyWorld> = W extends WorkerWorld ? WorkerBody : Body;
 
@@ -210,10 +218,13 @@ export class Pointer<W extends AnyWorld = World> {
     this.lastScreen = screen;
   }
 
-  /** Starts dragging `body` from world point `point`; false when it is not in the current world. */
+  /**
+   * Starts dragging `body` from world point `point`; false when it is not in the current world (or
+   * that world's worker has stopped).
+   */
   startDrag(body: BodyOf<W>, point: Vec2): boolean {
     const world = this.getWorld();
-    if (!world || body.world !== world || !body.isValid) return false;
+    if (!world || body.world !== world || !body.isValid || stopped(world)) return false;
     this.endDrag();
     if (isWorkerWorld(world)) {
       this.joint = world.createJoint({
@@ -254,7 +265,7 @@ export class Pointer<W extends AnyWorld = World> {
     this.dragPointer = null;
     if (!body || !joint || !world) return;
     // the body (and with it the joint) may have been destroyed, or the world swapped, meanwhile
-    if (joint.isValid && world === this.getWorld()) {
+    if (joint.isValid && world === this.getWorld() && !stopped(world)) {
       if (isWorkerWorld(world)) world.destroyJoint(joint as WorkerJoint);
       else (world as World).destroyJoint(joint as MouseJoint);
     }
@@ -288,7 +299,7 @@ export class Pointer<W extends AnyWorld = World> {
   private updateDrag(point: Vec2): void {
     const body = this.body;
     if (!body) return;
-    if (!body.isValid || this.jointWorld !== this.getWorld()) {
+    if (!body.isValid || this.jointWorld !== this.getWorld() || stopped(this.jointWorld!)) {
       this.endDrag();
       return;
     }

@@ -1,10 +1,19 @@
-import { BODY_KINDS, BODY_TYPES, type BodyType, type ResolvedBodyDef } from '../api/body';
-import { checkShapes, type ShapeDef } from '../api/shape';
+import {
+  BODY_KINDS,
+  BODY_TYPES,
+  type BodyType,
+  type ContactPointData,
+  type MassData,
+  type ResolvedBodyDef,
+} from '../api/body';
+import { checkShapes, type Filter, type ShapeDef } from '../api/shape';
 import { checkBoolean, FulcrumError, fail } from '../core/errors';
 import {
   checkAngle,
   checkCoordinates,
+  checkDensity,
   checkForce,
+  checkNonNegativeRate,
   checkRange,
   checkRate,
   checkVector,
@@ -17,14 +26,46 @@ import { makeRot, rotAngle } from '../math/rot';
 import type { Transform, Vec2 } from '../math/vec2';
 import { checkKindChange } from '../world/world-edits';
 import { toPlain } from './plain';
-import { type BodyCommand, type Plain, type PlainDef, Row } from './protocol';
+import {
+  type BodyCommand,
+  type BodySettings,
+  type JointCommand,
+  type Plain,
+  type PlainDef,
+  Row,
+  type ShapeSetting,
+  type ShapeSettings,
+} from './protocol';
 import type { WorkerWorld } from './worker-world';
+
+/** A touching contact of a WorkerBody (see Body.getContacts), with worker handles. */
+export interface WorkerContactData {
+  shapeA: WorkerShape;
+  shapeB: WorkerShape;
+  /** unit normal, from shape A to shape B */
+  normal: Vec2;
+  points: ContactPointData[];
+}
+
+/** The settings of a body made by `def` (checked and completed). */
+export function settingsOf(def: ResolvedBodyDef): BodySettings {
+  return {
+    linearDamping: def.linearDamping,
+    angularDamping: def.angularDamping,
+    gravityScale: def.gravityScale,
+    fixedRotation: def.fixedRotation,
+    bullet: def.bullet,
+    allowSleep: def.allowSleep,
+  };
+}
 
 /**
  * A body of a WorkerWorld, made at once on the calling thread while the worker makes the body itself
  * at the next step (or query). Its reads (position, velocities, ...) are synchronous and show the
  * state after the last step the world has finished; before its first step, the values it was created
- * with. Its commands are checked here as Body checks them and applied in the worker in order.
+ * with (the mass data too: a new body's shapes count from its first step). Its settings (damping,
+ * gravity scale, flags) read as the commands given so far leave them. Its commands are checked here
+ * as Body checks them and applied in the worker in order.
  */
 export class WorkerBody {
   readonly world: WorkerWorld;
@@ -41,8 +82,8 @@ export class WorkerBody {
   readonly shapeList: WorkerShape[] = [];
   /** @internal in creation order */
   readonly jointList: WorkerJoint[] = [];
-  /** @internal as created (drawn in the bullet colour) */
-  bullet: boolean;
+  /** the settings as the commands given so far leave them */
+  readonly #settings: BodySettings;
   /** the row it reads until a step reports it: the pose and velocities it was created with */
   readonly #initial = new Float64Array(Row.STRIDE);
 
@@ -53,6 +94,7 @@ export class WorkerBody {
     generation: number,
     type: BodyType,
     def: ResolvedBodyDef | null,
+    settings: BodySettings,
     userData: unknown,
   ) {
     this.world = world;
@@ -60,7 +102,7 @@ export class WorkerBody {
     this.generation = generation;
     this.kind = type;
     this.userData = userData;
-    this.bullet = def?.bullet ?? false;
+    this.#settings = settings;
     if (def === null) return;
     // as World.createBody leaves it (the centre of mass is the origin until the worker knows the shapes)
     const row = this.#initial;
@@ -75,6 +117,8 @@ export class WorkerBody {
     row[Row.VY] = moving ? def.v.y : 0;
     row[Row.W] = moving && !(def.fixedRotation && type === 'dynamic') ? def.w : 0;
     row[Row.AWAKE] = moving && def.awake ? 1 : 0;
+    // a body without shapes: a dynamic one weighs 1 kg, as on World
+    row[Row.MASS] = type === 'dynamic' ? 1 : 0;
   }
 
   /** @internal throws once the body is destroyed, as Body does */
@@ -128,6 +172,51 @@ export class WorkerBody {
 
   get isAwake(): boolean {
     return this.#read(Row.AWAKE) !== 0;
+  }
+
+  /** mass in kg, after the last step (see Body.mass) */
+  get mass(): number {
+    return this.#read(Row.MASS);
+  }
+
+  /** rotational inertia about the centre of mass, after the last step */
+  get inertia(): number {
+    return this.#read(Row.INERTIA);
+  }
+
+  /** the centre of mass in the body's frame, after the last step */
+  get localCenter(): Vec2 {
+    return { x: this.#read(Row.LCX), y: this.#read(Row.LCY) };
+  }
+
+  get linearDamping(): number {
+    this.check();
+    return this.#settings.linearDamping;
+  }
+
+  get angularDamping(): number {
+    this.check();
+    return this.#settings.angularDamping;
+  }
+
+  get gravityScale(): number {
+    this.check();
+    return this.#settings.gravityScale;
+  }
+
+  get fixedRotation(): boolean {
+    this.check();
+    return this.#settings.fixedRotation;
+  }
+
+  get bullet(): boolean {
+    this.check();
+    return this.#settings.bullet;
+  }
+
+  get allowSleep(): boolean {
+    this.check();
+    return this.#settings.allowSleep;
   }
 
   /** @internal fills `out` with the pose after the last step, as the engine keeps it (for drawing) */
@@ -221,6 +310,66 @@ export class WorkerBody {
     this.#command('setAwake', [checkBoolean('awake', awake)]);
   }
 
+  setLinearDamping(damping: number): void {
+    this.check();
+    this.#command('setLinearDamping', [checkNonNegativeRate('linearDamping', damping)]);
+    this.#settings.linearDamping = damping;
+  }
+
+  setAngularDamping(damping: number): void {
+    this.check();
+    this.#command('setAngularDamping', [checkNonNegativeRate('angularDamping', damping)]);
+    this.#settings.angularDamping = damping;
+  }
+
+  setGravityScale(scale: number): void {
+    this.check();
+    this.#command('setGravityScale', [checkRate('gravityScale', scale)]);
+    this.#settings.gravityScale = scale;
+  }
+
+  setFixedRotation(fixed: boolean): void {
+    this.check();
+    this.#command('setFixedRotation', [checkBoolean('fixedRotation', fixed)]);
+    this.#settings.fixedRotation = fixed;
+  }
+
+  setBullet(bullet: boolean): void {
+    this.check();
+    this.#command('setBullet', [checkBoolean('bullet', bullet)]);
+    this.#settings.bullet = bullet;
+  }
+
+  setAllowSleep(allow: boolean): void {
+    this.check();
+    this.#command('setAllowSleep', [checkBoolean('allowSleep', allow)]);
+    this.#settings.allowSleep = allow;
+  }
+
+  /**
+   * Gives the body a mass, an inertia and optionally a centre of mass in place of its shapes' (see
+   * Body.setMassData); `mass`, `inertia` and `localCenter` read them after the next step.
+   */
+  setMassData(data: MassData): void {
+    this.check();
+    this.#command('setMassData', [this.world.checkMassData(data)]);
+  }
+
+  /** Goes back to the mass data the body's shapes give (see Body.resetMassData). */
+  resetMassData(): void {
+    this.check();
+    this.#command('resetMassData', []);
+  }
+
+  /**
+   * The body's touching contacts (see Body.getContacts), as the worker's world has them after the
+   * commands queued before this call: as of the last step, less those of shapes destroyed since.
+   */
+  getContacts(): Promise<WorkerContactData[]> {
+    this.check();
+    return this.world.bodyContacts(this);
+  }
+
   /** Force in newtons at a world point (default: the centre of mass), until the end of the next step. */
   applyForce(force: Vec2, point?: Vec2): void {
     this.check();
@@ -255,10 +404,23 @@ export class WorkerBody {
   createShape(geometry: Geometry | Concave | Chain, def?: ShapeDef): WorkerShape | WorkerShape[] {
     this.check();
     const checked = checkShapes(BODY_KINDS[this.kind], geometry, def, this.world.shapeCount);
-    const userData = def?.userData;
-    const sensor = def?.isSensor === true;
+    const d = checked.def;
     const parts = checked.parts ?? [checked.geometry!];
-    const shapes = parts.map((part) => this.world.addShape(this, part, sensor, userData));
+    const shapes = parts.map((part) =>
+      this.world.addShape(
+        this,
+        part,
+        {
+          friction: d.friction,
+          restitution: d.restitution,
+          density: d.density,
+          filter: d.filter,
+          isSensor: def?.isSensor === true,
+          enableHitEvents: def?.enableHitEvents === true,
+        },
+        d.userData,
+      ),
+    );
     this.world.queue([
       'createShape',
       this.id,
@@ -278,25 +440,27 @@ export class WorkerBody {
   }
 }
 
-/** A shape of a WorkerBody. */
+/**
+ * A shape of a WorkerBody. Its settings read as the commands given so far leave them; its setters are
+ * checked here as ShapeHandle's are and applied in the worker in order.
+ */
 export class WorkerShape {
   readonly body: WorkerBody;
   /** @internal */
   readonly id: number;
   /** the shape's geometry in its body's frame (a concave shape's piece, a chain's segment) */
   readonly geometry: Geometry;
-  /** a sensor detects overlaps and never collides (as made: WorkerShape has no setter yet) */
-  readonly isSensor: boolean;
   userData: unknown;
   /** @internal */
   destroyed = false;
+  readonly #settings: ShapeSettings;
 
   /** @internal */
-  constructor(body: WorkerBody, id: number, geometry: Geometry, isSensor: boolean, userData: unknown) {
+  constructor(body: WorkerBody, id: number, geometry: Geometry, settings: ShapeSettings, userData: unknown) {
     this.body = body;
     this.id = id;
     this.geometry = geometry;
-    this.isSensor = isSensor;
+    this.#settings = settings;
     this.userData = userData;
   }
 
@@ -313,9 +477,83 @@ export class WorkerShape {
     this.check();
     return this.geometry.type;
   }
+
+  #set<K extends ShapeSetting>(setting: K, value: ShapeSettings[K]): void {
+    this.body.world.queue(['shape', this.id, setting, value]);
+    this.#settings[setting] = value;
+  }
+
+  get friction(): number {
+    this.check();
+    return this.#settings.friction;
+  }
+
+  set friction(value: number) {
+    this.check();
+    this.#set('friction', checkNonNegativeRate('friction', value));
+  }
+
+  get restitution(): number {
+    this.check();
+    return this.#settings.restitution;
+  }
+
+  set restitution(value: number) {
+    this.check();
+    this.#set('restitution', checkNonNegativeRate('restitution', value));
+  }
+
+  get density(): number {
+    this.check();
+    return this.#settings.density;
+  }
+
+  /** The body's mass data follows in the worker at once, and reads here after the next step. */
+  set density(value: number) {
+    this.check();
+    this.#set('density', checkDensity('density', value));
+  }
+
+  get filter(): Filter {
+    this.check();
+    const f = this.#settings.filter;
+    return { categoryBits: f.categoryBits, maskBits: f.maskBits, groupIndex: f.groupIndex };
+  }
+
+  /** As ShapeHandle's: what is not given takes its default, and the shape's contacts are found again. */
+  set filter(value: Partial<Filter>) {
+    this.check();
+    this.#set('filter', this.body.world.checkFilter(value));
+  }
+
+  /** a sensor detects overlaps and never collides */
+  get isSensor(): boolean {
+    this.check();
+    return this.#settings.isSensor;
+  }
+
+  set isSensor(value: boolean) {
+    this.check();
+    this.#set('isSensor', checkBoolean('isSensor', value));
+  }
+
+  get enableHitEvents(): boolean {
+    this.check();
+    return this.#settings.enableHitEvents;
+  }
+
+  set enableHitEvents(value: boolean) {
+    this.check();
+    this.#set('enableHitEvents', checkBoolean('enableHitEvents', value));
+  }
 }
 
-/** A joint of a WorkerWorld (a mouse joint's bodyA and bodyB are its one body, as on World). */
+/**
+ * A joint of a WorkerWorld (a mouse joint's bodyA and bodyB are its one body, as on World). It has
+ * the setters of every joint type; each is checked here as that type's joint checks it (on a joint of
+ * the same type that the calling thread keeps for checking) and applied in the worker in order. A
+ * setter that the joint's type does not have throws a FulcrumError.
+ */
 export class WorkerJoint {
   readonly world: WorkerWorld;
   /** @internal */
@@ -359,13 +597,95 @@ export class WorkerJoint {
     return this.#target === null ? null : { x: this.#target.x, y: this.#target.y };
   }
 
+  /** Checks a call of `method` as the joint of this type checks it, and queues it. */
+  #call(method: JointCommand, args: unknown[]): void {
+    this.world.checkJointCall(this.type, this.destroyed, method, args);
+    // the arguments as checked: numbers, booleans and points (read as the check read them)
+    const sent = args.map((a) =>
+      typeof a === 'object' && a !== null ? { x: (a as Vec2).x, y: (a as Vec2).y } : a,
+    );
+    this.world.queue(['joint', this.id, method, sent]);
+  }
+
   /** Moves a mouse joint's target and wakes its body, at the next step (see MouseJoint.setTarget). */
   setTarget(target: Vec2): void {
-    this.check();
-    if (this.type !== 'mouse') throw new FulcrumError(`setTarget: a ${this.type} joint has no target`);
-    const t = checkCoordinates('target', target);
-    this.world.queue(['joint', this.id, 'setTarget', [t]]);
-    this.#target = t;
+    this.#call('setTarget', [target]);
+    this.#target = { x: target.x, y: target.y };
+  }
+
+  /** revolute, prismatic, wheel */
+  enableMotor(enable: boolean): void {
+    this.#call('enableMotor', [enable]);
+  }
+
+  /** revolute, prismatic, wheel: rad/s, or m/s for a prismatic joint */
+  setMotorSpeed(speed: number): void {
+    this.#call('setMotorSpeed', [speed]);
+  }
+
+  /** revolute, wheel */
+  setMaxMotorTorque(torque: number): void {
+    this.#call('setMaxMotorTorque', [torque]);
+  }
+
+  /** prismatic */
+  setMaxMotorForce(force: number): void {
+    this.#call('setMaxMotorForce', [force]);
+  }
+
+  /** revolute, prismatic, wheel */
+  enableLimit(enable: boolean): void {
+    this.#call('enableLimit', [enable]);
+  }
+
+  /** revolute (angles), prismatic and wheel (translations) */
+  setLimits(lower: number, upper: number): void {
+    this.#call('setLimits', [lower, upper]);
+  }
+
+  /** distance, revolute, prismatic, wheel */
+  enableSpring(enable: boolean): void {
+    this.#call('enableSpring', [enable]);
+  }
+
+  /** distance, revolute, prismatic, wheel */
+  setSpring(hertz: number, dampingRatio: number): void {
+    this.#call('setSpring', [hertz, dampingRatio]);
+  }
+
+  /** distance */
+  setLength(length: number): void {
+    this.#call('setLength', [length]);
+  }
+
+  /** distance */
+  setLengthRange(minLength: number, maxLength: number): void {
+    this.#call('setLengthRange', [minLength, maxLength]);
+  }
+
+  /** weld: 0 makes that part rigid */
+  setStiffness(linearHertz: number, angularHertz: number, dampingRatio: number): void {
+    this.#call('setStiffness', [linearHertz, angularHertz, dampingRatio]);
+  }
+
+  /** motor: the wanted position of B's centre in A's frame */
+  setLinearOffset(offset: Vec2): void {
+    this.#call('setLinearOffset', [offset]);
+  }
+
+  /** motor */
+  setAngularOffset(angle: number): void {
+    this.#call('setAngularOffset', [angle]);
+  }
+
+  /** motor */
+  setMaxForce(force: number): void {
+    this.#call('setMaxForce', [force]);
+  }
+
+  /** motor */
+  setMaxTorque(torque: number): void {
+    this.#call('setMaxTorque', [torque]);
   }
 
   /** @internal */

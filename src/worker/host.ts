@@ -11,6 +11,7 @@ import { BodyFlag, BodyState } from '../store/body-store';
 import { deepFreeze } from './plain';
 import {
   type Batch,
+  type BodySettings,
   type Command,
   EVENT_ORDER,
   type EventRecord,
@@ -19,6 +20,8 @@ import {
   type Request,
   type RestoredHandles,
   Row,
+  type ShapeSetting,
+  type ShapeSettings,
 } from './protocol';
 
 function isShared(buffer: ArrayBufferLike): boolean {
@@ -32,6 +35,28 @@ function hitOut(hit: CastHit, shapeId: (s: ShapeHandle) => number): Plain {
     point: { x: hit.point.x, y: hit.point.y },
     normal: { x: hit.normal.x, y: hit.normal.y },
     fraction: hit.fraction,
+  };
+}
+
+function bodySettings(body: Body): BodySettings {
+  return {
+    linearDamping: body.linearDamping,
+    angularDamping: body.angularDamping,
+    gravityScale: body.gravityScale,
+    fixedRotation: body.fixedRotation,
+    bullet: body.bullet,
+    allowSleep: body.allowSleep,
+  };
+}
+
+function shapeSettings(shape: ShapeHandle): ShapeSettings {
+  return {
+    friction: shape.friction,
+    restitution: shape.restitution,
+    density: shape.density,
+    filter: shape.filter,
+    isSensor: shape.isSensor,
+    enableHitEvents: shape.enableHitEvents,
   };
 }
 
@@ -209,11 +234,21 @@ export class WorldHost {
         (body[method] as (...a: unknown[]) => void).apply(body, args);
         return;
       }
+      case 'shape': {
+        const [, id, setting, value] = command;
+        const shape = this.#shapes[id];
+        if (shape === undefined) throw new FulcrumError('shape has been destroyed');
+        (shape as unknown as Record<ShapeSetting, unknown>)[setting] = value;
+        return;
+      }
       case 'joint': {
-        const [, id, , args] = command;
+        const [, id, method, args] = command;
         const joint = this.#joints[id];
         if (joint === undefined) throw new FulcrumError('joint has been destroyed');
-        (joint as MouseJoint).setTarget(args[0] as { x: number; y: number });
+        const call = (joint as unknown as Record<string, unknown>)[method];
+        // the calling thread sends a joint only the methods of its type
+        if (typeof call !== 'function') throw new FulcrumError(`${method}: a ${joint.type} joint has none`);
+        call.apply(joint, args);
         return;
       }
       case 'gravity':
@@ -231,19 +266,17 @@ export class WorldHost {
       bodies: [],
       shapes: [],
       joints: [],
-      bullets: [],
     };
     for (const body of world.bodies) {
       const id = restored.bodies.length;
       this.#bodies[id] = body;
       this.#generations[id] = 1;
       this.#bodyIds.set(body, id);
-      restored.bodies.push(body.type);
-      restored.bullets.push(body.bullet);
+      restored.bodies.push([body.type, bodySettings(body)]);
       for (const shape of body.shapes) {
         this.#shapes[restored.shapes.length] = shape;
         this.#shapeIds.set(shape, restored.shapes.length);
-        restored.shapes.push([id, shape.geometry as unknown as Plain, shape.isSensor]);
+        restored.shapes.push([id, shape.geometry as unknown as Plain, shapeSettings(shape)]);
       }
     }
     for (const joint of world.joints) {
@@ -312,6 +345,10 @@ export class WorldHost {
       view[r + Row.CX] = columns.cx[b];
       view[r + Row.CY] = columns.cy[b];
       view[r + Row.AWAKE] = (columns.flags[b] & BodyFlag.AWAKE) !== 0 ? 1 : 0;
+      view[r + Row.MASS] = columns.mass[b];
+      view[r + Row.INERTIA] = columns.inertia[b];
+      view[r + Row.LCX] = columns.lcx[b];
+      view[r + Row.LCY] = columns.lcy[b];
     }
     reply.buffer = buffer;
     if (!isShared(buffer)) transfer.push(buffer as ArrayBuffer);
@@ -400,6 +437,15 @@ export class WorldHost {
       case 'overlapShape':
         deepFreeze(args[0]);
         return world.overlapShape(...(args as Parameters<World['overlapShape']>)).map(shapeId);
+      case 'getContacts':
+        return this.#body(args[0] as number)
+          .getContacts()
+          .map((c) => ({
+            shapeA: shapeId(c.shapeA),
+            shapeB: shapeId(c.shapeB),
+            normal: c.normal,
+            points: c.points,
+          }));
       default:
         throw new FulcrumError(`worker: unknown query ${JSON.stringify(name)}`);
     }

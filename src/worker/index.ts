@@ -14,7 +14,7 @@ export type {
   WorkerWarningEvent,
   WorkerWorldEventMap,
 } from './events';
-export { WorkerBody, WorkerJoint, WorkerShape } from './handles';
+export { WorkerBody, type WorkerContactData, WorkerJoint, WorkerShape } from './handles';
 export {
   type BufferMode,
   type WorkerCastHit,

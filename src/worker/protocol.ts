@@ -22,9 +22,62 @@ export const BODY_COMMANDS = Object.freeze([
   'applyTorque',
   'applyLinearImpulse',
   'applyAngularImpulse',
+  'setLinearDamping',
+  'setAngularDamping',
+  'setGravityScale',
+  'setFixedRotation',
+  'setBullet',
+  'setAllowSleep',
+  'setMassData',
+  'resetMassData',
 ] as const);
 
 export type BodyCommand = (typeof BODY_COMMANDS)[number];
+
+/** Shape settings that a WorkerShape's setters queue, with their checked values (ShapeHandle's setters). */
+export type ShapeSetting = 'friction' | 'restitution' | 'density' | 'filter' | 'isSensor' | 'enableHitEvents';
+
+/** Joint methods that a WorkerJoint queues as they are, with their checked arguments (each on the joint types that have it). */
+export const JOINT_COMMANDS = Object.freeze([
+  'setTarget',
+  'enableMotor',
+  'setMotorSpeed',
+  'setMaxMotorTorque',
+  'setMaxMotorForce',
+  'enableLimit',
+  'setLimits',
+  'enableSpring',
+  'setSpring',
+  'setLength',
+  'setLengthRange',
+  'setStiffness',
+  'setLinearOffset',
+  'setAngularOffset',
+  'setMaxForce',
+  'setMaxTorque',
+] as const);
+
+export type JointCommand = (typeof JOINT_COMMANDS)[number];
+
+/** A body's settings that the calling thread reads without asking (Body's reads of the same names). */
+export interface BodySettings {
+  linearDamping: number;
+  angularDamping: number;
+  gravityScale: number;
+  fixedRotation: boolean;
+  bullet: boolean;
+  allowSleep: boolean;
+}
+
+/** A shape's settings that the calling thread reads without asking (ShapeHandle's reads of the same names). */
+export interface ShapeSettings {
+  friction: number;
+  restitution: number;
+  density: number;
+  filter: { categoryBits: number; maskBits: number; groupIndex: number };
+  isSensor: boolean;
+  enableHitEvents: boolean;
+}
 
 /**
  * A plain value: what a checked definition or argument holds once its handles are ids and its
@@ -46,12 +99,22 @@ export type Command =
   | ['createJoint', number, PlainDef]
   | ['destroyJoint', number]
   | ['body', number, BodyCommand, Plain[]]
-  /** joint id, a joint method (a mouse joint's setTarget), its checked arguments */
-  | ['joint', number, 'setTarget', Plain[]]
+  /** shape id, the setting, its checked value */
+  | ['shape', number, ShapeSetting, Plain]
+  /** joint id, a method of the joint's type, its checked arguments */
+  | ['joint', number, JointCommand, Plain[]]
   | ['gravity', { x: number; y: number }];
 
 /** The world's queries that a WorkerWorld forwards. */
-export type QueryName = 'castRay' | 'castRayAll' | 'queryAABB' | 'queryPoint' | 'castShape' | 'overlapShape';
+export type QueryName =
+  | 'castRay'
+  | 'castRayAll'
+  | 'queryAABB'
+  | 'queryPoint'
+  | 'castShape'
+  | 'overlapShape'
+  /** a body's touching contacts (Body.getContacts); its one argument is the body's id */
+  | 'getContacts';
 
 /** The event kinds a WorkerWorld delivers, in the order World delivers them after a step. */
 export const EVENT_ORDER = Object.freeze([
@@ -118,14 +181,12 @@ export enum EventStride {
 /** A restored world's handles: body i has id i, and so on; generation 1 each. */
 export interface RestoredHandles {
   gravity: { x: number; y: number };
-  /** each body's type */
-  bodies: BodyType[];
-  /** each shape's body id, geometry and whether it is a sensor */
-  shapes: [number, Plain, boolean][];
+  /** each body's type and settings */
+  bodies: [BodyType, BodySettings][];
+  /** each shape's body id, geometry and settings */
+  shapes: [number, Plain, ShapeSettings][];
   /** each joint's type, body ids, and a mouse joint's target (null for other joints) */
   joints: [JointType, number, number, { x: number; y: number } | null][];
-  /** each body's bullet flag */
-  bullets: boolean[];
 }
 
 export interface Reply {
@@ -152,7 +213,8 @@ export const JOINT_ANCHORS_STRIDE = 5;
 /**
  * The state buffer: a Float64Array with one row per body id, written by the worker after each step.
  * GENERATION tells which body of that id the row is about; PREV_* is the pose at the start of the
- * step (after that step's commands), for drawing between two steps.
+ * step (after that step's commands), for drawing between two steps; MASS, INERTIA and LC* the mass
+ * data (four numbers a row: cheaper than a message of their own whenever shapes or settings change).
  */
 export enum Row {
   GENERATION = 0,
@@ -170,5 +232,9 @@ export enum Row {
   PREV_PY = 12,
   PREV_QC = 13,
   PREV_QS = 14,
-  STRIDE = 15,
+  MASS = 15,
+  INERTIA = 16,
+  LCX = 17,
+  LCY = 18,
+  STRIDE = 19,
 }

@@ -1,18 +1,21 @@
-import { type Body, type BodyDef, type ResolvedBodyDef, resolveBodyDef } from '../api/body';
+import { type Body, type BodyDef, type MassData, type ResolvedBodyDef, resolveBodyDef } from '../api/body';
 import { EVENT_NAMES } from '../api/events';
+import type { Filter, ShapeHandle } from '../api/shape';
 import { World, type WorldDef } from '../api/world';
 import { Emitter } from '../core/emitter';
 import { checkKnownKeys, FulcrumError, fail } from '../core/errors';
 import { checkRoom } from '../core/index-bound';
 import { checkVector, checkZeroOrRange, Limits } from '../core/limits';
+import { Shape } from '../geometry/shapes';
 import type { Geometry } from '../geometry/types';
 import { buildJoint } from '../joints/create-joint';
+import type { Joint } from '../joints/joint';
 import type { JointDef, JointType, JointTypes } from '../joints/registry';
 import type { AABB } from '../math/aabb';
 import type { Vec2 } from '../math/vec2';
 import type { QueryFilter, QueryTransform } from '../query/index';
 import { decodeEvents, type WorkerWorldEventMap } from './events';
-import { WorkerBody, WorkerJoint, WorkerShape } from './handles';
+import { settingsOf, WorkerBody, type WorkerContactData, WorkerJoint, WorkerShape } from './handles';
 import { deepFreeze, toPlain } from './plain';
 import { type PortListener, startWorker, type WorkerPort } from './platform';
 import {
@@ -20,6 +23,7 @@ import {
   EVENT_ORDER,
   type EventKind,
   JOINT_ANCHORS_STRIDE,
+  type JointCommand,
   type Plain,
   type PlainDef,
   type QueryName,
@@ -27,6 +31,7 @@ import {
   type Request,
   type RestoredHandles,
   Row,
+  type ShapeSettings,
 } from './protocol';
 
 /** How the worker hands each step's state over: one shared memory, or buffers moved back and forth. */
@@ -37,6 +42,12 @@ export interface WorkerOptions {
   url?: URL | string;
   /** 'auto' (default): 'shared' where SharedArrayBuffer is available (Node; a cross-origin isolated page), 'transfer' otherwise */
   buffers?: 'auto' | BufferMode;
+  /**
+   * How long the worker may leave a request unanswered, in milliseconds, before the world fails as if
+   * the worker had crashed (default 10,000; Infinity, or anything over 24 days, never). It counts from
+   * the request, or from the last reply when requests queue behind one another.
+   */
+  requestTimeoutMs?: number;
 }
 
 export interface WorkerWorldDef extends WorldDef {
@@ -58,7 +69,10 @@ export interface WorkerCastHit {
   fraction: number;
 }
 
-const OPTION_KEYS = ['url', 'buffers'] as const;
+const OPTION_KEYS = ['url', 'buffers', 'requestTimeoutMs'] as const;
+const DEFAULT_TIMEOUT_MS = 10_000;
+/** The longest delay timers take (2^31 - 1 ms, 24.8 days): a longer one fires at once. */
+const MAX_TIMER_MS = 0x7fffffff;
 const BODY_KEYS = ['bodyA', 'bodyB', 'body'] as const;
 
 /** A request waiting for its reply: `settle` reads the reply (in order, as it arrives) and ends the promise. */
@@ -75,11 +89,26 @@ interface Release {
   id: number;
 }
 
-function checkOptions(options: unknown): { url: URL | string | undefined; shared: boolean } {
-  if (options === undefined) return { url: undefined, shared: sharedAvailable() };
+interface CheckedOptions {
+  url: URL | string | undefined;
+  shared: boolean;
+  timeoutMs: number;
+}
+
+/** A request timeout: a positive number of milliseconds, or Infinity. */
+function checkTimeout(argument: string, value: unknown): number {
+  if (typeof value !== 'number' || Number.isNaN(value) || value <= 0) {
+    fail(argument, value, 'a positive number of milliseconds, or Infinity');
+  }
+  return value;
+}
+
+function checkOptions(options: unknown): CheckedOptions {
+  if (options === undefined)
+    return { url: undefined, shared: sharedAvailable(), timeoutMs: DEFAULT_TIMEOUT_MS };
   if (typeof options !== 'object' || options === null) fail('worker', options, 'an object');
   checkKnownKeys('worker', options, OPTION_KEYS);
-  const { url, buffers } = options as WorkerOptions;
+  const { url, buffers, requestTimeoutMs } = options as WorkerOptions;
   if (url !== undefined && typeof url !== 'string' && !(url instanceof URL)) {
     fail('worker.url', url, 'a string or a URL');
   }
@@ -91,7 +120,14 @@ function checkOptions(options: unknown): { url: URL | string | undefined; shared
       "worker.buffers: 'shared' needs SharedArrayBuffer, which this page does not have (it is not cross-origin isolated)",
     );
   }
-  return { url, shared: buffers === 'shared' || ((buffers ?? 'auto') === 'auto' && sharedAvailable()) };
+  return {
+    url,
+    shared: buffers === 'shared' || ((buffers ?? 'auto') === 'auto' && sharedAvailable()),
+    timeoutMs:
+      requestTimeoutMs === undefined
+        ? DEFAULT_TIMEOUT_MS
+        : checkTimeout('worker.requestTimeoutMs', requestTimeoutMs),
+  };
 }
 
 function sharedAvailable(): boolean {
@@ -141,6 +177,13 @@ export class WorkerWorld {
   /** bodies of #scratch that stand for a joint definition's bodies while it is checked */
   readonly #scratchBodies: Body[] = [];
   readonly #shared: boolean;
+  /** stand-ins on #scratch that check what World checks on a body, a shape or a joint of each type */
+  #massStandIn: Body | null = null;
+  #filterStandIn: ShapeHandle | null = null;
+  readonly #jointStandIns = new Map<JointType, Joint>();
+  #timeoutMs: number;
+  /** runs out when the worker has left what waits unanswered for #timeoutMs */
+  #timer: ReturnType<typeof setTimeout> | null = null;
   #port: WorkerPort | null = null;
   #failure: FulcrumError | null = null;
   #queue: Command[] = [];
@@ -164,9 +207,10 @@ export class WorkerWorld {
   #stepMs = 0;
   readonly #handlers = new Emitter<WorkerWorldEventMap>();
 
-  private constructor(scratch: World, shared: boolean) {
+  private constructor(scratch: World, options: CheckedOptions) {
     this.#scratch = scratch;
-    this.#shared = shared;
+    this.#shared = options.shared;
+    this.#timeoutMs = options.timeoutMs;
     this.#gravity = scratch.gravity;
   }
 
@@ -178,7 +222,7 @@ export class WorkerWorld {
     if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
     const { worker, ...worldDef } = def;
     const options = checkOptions(worker);
-    const world = new WorkerWorld(new World(worldDef), options.shared);
+    const world = new WorkerWorld(new World(worldDef), options);
     return world
       .#start(options.url, {
         kind: 'create',
@@ -197,7 +241,7 @@ export class WorkerWorld {
   static restore(bytes: Uint8Array, options?: WorkerOptions): Promise<WorkerWorld> {
     if (!(bytes instanceof Uint8Array)) fail('bytes', bytes, 'a Uint8Array made by world.snapshot()');
     const checked = checkOptions(options);
-    const world = new WorkerWorld(new World(), checked.shared);
+    const world = new WorkerWorld(new World(), checked);
     return world
       .#start(checked.url, { kind: 'restore', bytes, buffer: world.#buffer() }, (reply) =>
         world.#adoptRestored(reply),
@@ -269,6 +313,28 @@ export class WorkerWorld {
     return this.#bodies;
   }
 
+  /**
+   * How long the worker may leave a request unanswered before the world fails (see
+   * WorkerOptions.requestTimeoutMs); changed, it counts from now for what waits.
+   */
+  get requestTimeoutMs(): number {
+    return this.#timeoutMs;
+  }
+
+  set requestTimeoutMs(value: number) {
+    this.#timeoutMs = checkTimeout('requestTimeoutMs', value);
+    if (this.#waiting.length > 0 && this.#failure === null) this.#arm();
+  }
+
+  /**
+   * Why the world stopped: the FulcrumError its worker failed with (it threw, exited, or left a
+   * request unanswered too long), or that it was terminated; null while it runs. Every command
+   * throws it then, and every request rejects with it.
+   */
+  get failure(): FulcrumError | null {
+    return this.#failure;
+  }
+
   /** Steps the worker has finished (whose promise has resolved or is about to). */
   get stepCount(): number {
     return this.#stepCount;
@@ -330,7 +396,15 @@ export class WorkerWorld {
     const id = this.#allocate('bodies');
     const generation = (this.#generations[id] ?? 0) + 1;
     this.#generations[id] = generation;
-    const body = new WorkerBody(this, id, generation, resolved.type, resolved, def.userData);
+    const body = new WorkerBody(
+      this,
+      id,
+      generation,
+      resolved.type,
+      resolved,
+      settingsOf(resolved),
+      def.userData,
+    );
     this.#bodies[id] = body;
     this.#bodyCount++;
     this.queue(['createBody', id, generation, fullBodyDef(resolved)]);
@@ -351,9 +425,9 @@ export class WorkerWorld {
   }
 
   /** @internal a new shape handle of `body` (WorkerBody.createShape has checked it) */
-  addShape(body: WorkerBody, geometry: Geometry, sensor: boolean, userData: unknown): WorkerShape {
+  addShape(body: WorkerBody, geometry: Geometry, settings: ShapeSettings, userData: unknown): WorkerShape {
     const id = this.#allocate('shapes');
-    const shape = new WorkerShape(body, id, geometry, sensor, userData);
+    const shape = new WorkerShape(body, id, geometry, settings, userData);
     this.#shapes[id] = shape;
     body.shapeList.push(shape);
     this.#shapeCount++;
@@ -410,12 +484,76 @@ export class WorkerWorld {
       value.check();
       let i = seen.indexOf(value);
       if (i < 0) i = seen.push(value) - 1;
-      while (this.#scratchBodies.length <= i) {
-        this.#scratchBodies.push(this.#scratch.createBody({ type: 'dynamic', position: { x: i, y: 0 } }));
-      }
-      copy[key] = this.#scratchBodies[i];
+      copy[key] = this.#scratchBody(i);
     }
     return copy;
+  }
+
+  /** The scratch world's `i`th stand-in body for a joint's bodies. */
+  #scratchBody(i: number): Body {
+    while (this.#scratchBodies.length <= i) {
+      const x = this.#scratchBodies.length;
+      this.#scratchBodies.push(this.#scratch.createBody({ type: 'dynamic', position: { x, y: 0 } }));
+    }
+    return this.#scratchBodies[i];
+  }
+
+  /** @internal checks `data` as Body.setMassData does; gives the checked values */
+  checkMassData(data: MassData): MassData {
+    this.#massStandIn ??= this.#scratch.createBody({ type: 'dynamic' });
+    this.#massStandIn.setMassData(data);
+    const { mass, inertia, center } = data;
+    return center === undefined ? { mass, inertia } : { mass, inertia, center: { x: center.x, y: center.y } };
+  }
+
+  /** @internal checks a filter as ShapeHandle's setter does; gives it as World would read it back */
+  checkFilter(value: Partial<Filter>): Filter {
+    this.#filterStandIn ??= this.#scratch.createBody().createShape(Shape.circle(1));
+    this.#filterStandIn.filter = value;
+    return this.#filterStandIn.filter;
+  }
+
+  /**
+   * @internal Checks a call of a joint setter as a joint of type `type` checks it (destroyed or not):
+   * on a joint of that type between stand-in bodies, which the call changes and nothing reads.
+   */
+  checkJointCall(type: JointType, destroyed: boolean, method: JointCommand, args: unknown[]): void {
+    let joint = this.#jointStandIns.get(type);
+    if (joint === undefined) {
+      const a = this.#scratchBody(0);
+      const b = this.#scratchBody(1);
+      const axis = { x: 1, y: 0 };
+      const def =
+        type === 'mouse'
+          ? { type, body: a, target: { x: 0, y: 0 } }
+          : type === 'prismatic' || type === 'wheel'
+            ? { type, bodyA: a, bodyB: b, axis }
+            : { type, bodyA: a, bodyB: b };
+      joint = buildJoint(this.#scratch, def as JointDef);
+      this.#jointStandIns.set(type, joint);
+    }
+    const call = (joint as unknown as Record<string, unknown>)[method];
+    if (typeof call !== 'function') throw new FulcrumError(`${method}: a ${type} joint has no ${method}()`);
+    joint.destroyed = destroyed;
+    try {
+      call.apply(joint, args);
+    } finally {
+      joint.destroyed = false;
+    }
+  }
+
+  /** @internal `body.getContacts()`, answered by the worker */
+  bodyContacts(body: WorkerBody): Promise<WorkerContactData[]> {
+    return this.#query('getContacts', [body.id], (list) =>
+      (list as { shapeA: number; shapeB: number; normal: Vec2; points: WorkerContactData['points'] }[]).map(
+        (c) => ({
+          shapeA: this.#shapes[c.shapeA]!,
+          shapeB: this.#shapes[c.shapeB]!,
+          normal: c.normal,
+          points: c.points,
+        }),
+      ),
+    );
   }
 
   /** Destroys a joint. */
@@ -599,6 +737,7 @@ export class WorkerWorld {
         reject,
       });
       port.hold(true);
+      if (this.#timer === null) this.#arm();
       const buffer = 'buffer' in request ? request.buffer : undefined;
       const transfer: Transferable[] = [];
       if (buffer !== undefined && !this.#shared) transfer.push(buffer as ArrayBuffer);
@@ -617,7 +756,11 @@ export class WorkerWorld {
       return;
     }
     this.#release(reply.seq);
-    this.#port?.hold(this.#waiting.length > 0);
+    const more = this.#waiting.length > 0;
+    this.#port?.hold(more);
+    // an answer shows the worker alive: what waits next gets the whole time from now
+    this.#disarm();
+    if (more) this.#arm();
     waiting.settle(reply);
     // after settle, which makes a restored world's joints; before any code awaiting the reply runs
     if (reply.anchors !== undefined) this.#adoptAnchors(reply.anchors);
@@ -632,9 +775,30 @@ export class WorkerWorld {
     }
   }
 
+  /** (Re)starts the count towards the request timeout. */
+  #arm(): void {
+    this.#disarm();
+    const ms = this.#timeoutMs;
+    if (ms > MAX_TIMER_MS) return;
+    this.#timer = setTimeout(() => {
+      this.#timer = null;
+      this.#fail(
+        new FulcrumError(
+          `worker: the world's worker did not answer within ${ms} ms (requestTimeoutMs); it has been terminated`,
+        ),
+      );
+    }, ms);
+  }
+
+  #disarm(): void {
+    if (this.#timer !== null) clearTimeout(this.#timer);
+    this.#timer = null;
+  }
+
   /** Ends the worker and rejects what waits, with a FulcrumError that says why. */
   #fail(error: Error): void {
     if (this.#failure !== null) return;
+    this.#disarm();
     this.#failure =
       error instanceof FulcrumError
         ? error
@@ -667,15 +831,13 @@ export class WorkerWorld {
   #adoptRestored(reply: Reply): void {
     const restored = reply.restored as RestoredHandles;
     this.#gravity = restored.gravity;
-    restored.bodies.forEach((type, id) => {
-      const body = new WorkerBody(this, id, 1, type, null, undefined);
-      body.bullet = restored.bullets[id];
-      this.#bodies.push(body);
+    restored.bodies.forEach(([type, settings], id) => {
+      this.#bodies.push(new WorkerBody(this, id, 1, type, null, settings, undefined));
       this.#generations.push(1);
     });
     this.#bodyCount = restored.bodies.length;
-    for (const [bodyId, geometry, sensor] of restored.shapes) {
-      this.addShape(this.#bodies[bodyId]!, deepFreeze(geometry) as unknown as Geometry, sensor, undefined);
+    for (const [bodyId, geometry, settings] of restored.shapes) {
+      this.addShape(this.#bodies[bodyId]!, deepFreeze(geometry) as unknown as Geometry, settings, undefined);
     }
     for (const [type, a, b, target] of restored.joints) {
       const bodyA = this.#bodies[a]!;

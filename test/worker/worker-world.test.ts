@@ -421,11 +421,68 @@ describe('a WorkerWorld whose worker fails', () => {
     await expect(snapshot).rejects.toThrow(/exited with code 7/);
   });
 
+  it('fails when the worker leaves a request unanswered for requestTimeoutMs, as when it crashes', async () => {
+    const world = await open({ worker: { url: crashing(), requestTimeoutMs: Number.POSITIVE_INFINITY } });
+    const ball = world.createBody({ type: 'dynamic' });
+    ball.createShape(Shape.circle(1));
+    await world.step(1 / 60);
+    expect(world.failure).toBe(null);
+    // the fixture never answers a step of 1/5 s, nor anything after it
+    const step = world.step(1 / 5);
+    const query = world.queryPoint({ x: 0, y: 0 });
+    // counted from here, for what waits
+    world.requestTimeoutMs = 100;
+    const message = /worker: the world's worker did not answer within 100 ms \(requestTimeoutMs\)/;
+    for (const waiting of [step, query]) {
+      await expect(waiting).rejects.toBeInstanceOf(FulcrumError);
+      await expect(waiting).rejects.toThrow(message);
+    }
+    expect(world.failure).toBeInstanceOf(FulcrumError);
+    expect(world.failure?.message).toMatch(message);
+    expect(() => ball.setLinearDamping(1)).toThrow(message);
+    await expect(world.step(1 / 60)).rejects.toThrow(message);
+    // the reads keep the last state the worker gave
+    expect(ball.position.y).toBeLessThan(0);
+  });
+
+  it('fails when the worker spins on a request, and ends that worker', async () => {
+    const world = await open({ worker: { url: crashing() } });
+    expect(world.requestTimeoutMs).toBe(10_000);
+    await world.step(1 / 60);
+    // the fixture loops for ever on a step of 1/3 s; terminate stops it (else the test run would not end)
+    const step = world.step(1 / 3);
+    const hash = world.stateHash();
+    world.requestTimeoutMs = 100;
+    await expect(step).rejects.toThrow(/did not answer within 100 ms/);
+    await expect(hash).rejects.toThrow(/did not answer within 100 ms/);
+  });
+
+  it('refuses a request timeout that is not a positive number of milliseconds', async () => {
+    for (const bad of [0, -1, Number.NaN, '10', null]) {
+      expect(() =>
+        WorkerWorld.create({ worker: { url: workerScript(), requestTimeoutMs: bad as never } }),
+      ).toThrow(`worker.requestTimeoutMs must be a positive number of milliseconds, or Infinity, got`);
+    }
+    const world = await open({ worker: { requestTimeoutMs: 2 ** 40 } });
+    expect(world.requestTimeoutMs).toBe(2 ** 40);
+    // longer than a timer can wait: never (a timer of that length would fire at once)
+    for (let i = 0; i < 3; i++) await world.step(1 / 60);
+    expect(world.failure).toBe(null);
+    world.requestTimeoutMs = Number.POSITIVE_INFINITY;
+    expect(() => {
+      world.requestTimeoutMs = -5;
+    }).toThrow('requestTimeoutMs must be a positive number of milliseconds, or Infinity, got -5');
+    expect(world.requestTimeoutMs).toBe(Number.POSITIVE_INFINITY);
+    await world.step(1 / 60);
+    expect(world.failure).toBe(null);
+  });
+
   it('rejects what waits when terminated, and says so', async () => {
     const world = await open();
     const step = world.step(1 / 60);
     world.terminate();
     await expect(step).rejects.toThrow('worker: the world has been terminated');
     expect(() => world.createBody()).toThrow('worker: the world has been terminated');
+    expect(world.failure?.message).toBe('worker: the world has been terminated');
   });
 });
