@@ -67,6 +67,14 @@ const WORLD_DEF_KEYS = [
   'workerUrl',
 ] as const;
 
+/** @internal Checks a definition's `workers` and `workerUrl` (World's and WorkerWorld's); returns the threads. */
+export function checkWorkers(def: WorldDef): number {
+  const workerUrl = def.workerUrl;
+  if (workerUrl !== undefined && typeof workerUrl !== 'string' && !(workerUrl instanceof URL))
+    fail('workerUrl', workerUrl, 'a URL or a string');
+  return def.workers === undefined ? 1 : checkInteger('workers', def.workers, 1, 64);
+}
+
 /** A physics world: bodies, their shapes, contacts and the step that moves them. */
 export class World {
   /** @internal the engine state behind this API */
@@ -96,10 +104,7 @@ export class World {
         : checkRange('lengthUnitsPerMeter', def.lengthUnitsPerMeter, Limits.MIN_UNITS, Limits.MAX_UNITS);
     const frictionMixing =
       def.frictionMixing === undefined ? 'geometric' : checkFrictionMixing(def.frictionMixing);
-    const workers = def.workers === undefined ? 1 : checkInteger('workers', def.workers, 1, 64);
-    const workerUrl = def.workerUrl;
-    if (workerUrl !== undefined && typeof workerUrl !== 'string' && !(workerUrl instanceof URL))
-      fail('workerUrl', workerUrl, 'a URL or a string');
+    const workers = checkWorkers(def);
     this.core = new WorldCore(units);
     this.handles = new WorldHandles(this.core);
     this.core.gravityX = gravity.x;
@@ -110,7 +115,7 @@ export class World {
     this.core.frictionMin = frictionMixing === 'min';
     this.#workersReady =
       workers > 1 && typeof SharedArrayBuffer === 'function'
-        ? this.#startTeam(workers, workerUrl)
+        ? this.#startTeam(workers, def.workerUrl)
         : Promise.resolve(1);
     // a world whose workers failed steps on one thread: that is not an unhandled error of the program
     this.#workersReady.catch(() => {});

@@ -34,7 +34,8 @@ export async function startThread(url: URL | string): Promise<Thread> {
     const { Worker } = (await import(/* @vite-ignore */ threads)) as {
       Worker: new (url: URL | string) => NodeWorker;
     };
-    const worker = new Worker(url);
+    // Node takes a file:// address only as a URL object (a string must be a path)
+    const worker = new Worker(typeof url === 'string' && url.startsWith('file:') ? new URL(url) : url);
     // a team's workers do not keep the process alive: the world holds no pending work of its own
     worker.unref();
     return {

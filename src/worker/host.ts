@@ -138,6 +138,7 @@ export class WorldHost {
         const start = performance.now();
         world.step(request.dt);
         reply.stepMs = performance.now() - start;
+        reply.threads = world.workers;
         this.#publish(buffer, reply, transfer, true);
         if (request.events.length > 0) reply.events = this.#events(request.events);
         return;

@@ -206,6 +206,8 @@ export interface Reply {
   anchors?: number[];
   /** a step's duration in the worker, milliseconds (output only) */
   stepMs?: number;
+  /** the threads that solved the step (the world's `workers`, once started) */
+  threads?: number;
 }
 
 export const JOINT_ANCHORS_STRIDE = 5;

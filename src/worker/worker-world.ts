@@ -1,7 +1,7 @@
 import { type Body, type BodyDef, type MassData, type ResolvedBodyDef, resolveBodyDef } from '../api/body';
 import { EVENT_NAMES } from '../api/events';
 import type { Filter, ShapeHandle } from '../api/shape';
-import { World, type WorldDef } from '../api/world';
+import { checkWorkers, World, type WorldDef } from '../api/world';
 import { Emitter } from '../core/emitter';
 import { checkKnownKeys, FulcrumError, fail } from '../core/errors';
 import { checkRoom } from '../core/index-bound';
@@ -205,6 +205,7 @@ export class WorkerWorld {
   #gravity: Vec2;
   #stepCount = 0;
   #stepMs = 0;
+  #threads = 1;
   readonly #handlers = new Emitter<WorkerWorldEventMap>();
 
   private constructor(scratch: World, options: CheckedOptions) {
@@ -220,13 +221,17 @@ export class WorkerWorld {
    */
   static create(def: WorkerWorldDef = {}): Promise<WorkerWorld> {
     if (typeof def !== 'object' || def === null) fail('def', def, 'an object');
-    const { worker, ...worldDef } = def;
+    const { worker, workers, workerUrl, ...worldDef } = def;
     const options = checkOptions(worker);
+    // the world in the worker starts its own solver workers (see WorldDef.workers); this thread's
+    // stand-in only checks the definition, so it gets none
+    checkWorkers({ workers, workerUrl });
     const world = new WorkerWorld(new World(worldDef), options);
+    const url = workerUrl === undefined ? undefined : String(workerUrl);
     return world
       .#start(options.url, {
         kind: 'create',
-        def: toPlain(worldDef) as PlainDef,
+        def: toPlain({ ...worldDef, workers, workerUrl: url }) as PlainDef,
         buffer: world.#buffer(),
       })
       .then(() => world);
@@ -343,6 +348,11 @@ export class WorkerWorld {
   /** How long the worker's last step took, in milliseconds (measured in the worker; output only). */
   get lastStepMs(): number {
     return this.#stepMs;
+  }
+
+  /** The threads that solved the last step: the definition's `workers` once the world's own have started. */
+  get workers(): number {
+    return this.#threads;
   }
 
   #usable(): void {
@@ -607,6 +617,7 @@ export class WorkerWorld {
       this.#adopt(reply);
       this.#stepCount++;
       this.#stepMs = reply.stepMs ?? 0;
+      this.#threads = reply.threads ?? 1;
       if (reply.events !== undefined) this.#deliver(reply);
       if (handlers.has('postStep')) handlers.emit('postStep', { dt });
     });

@@ -3,6 +3,7 @@ import { buildFulcrumWorld } from '../../scenes/build-fulcrum';
 import { benchmarkScenes, sceneBuilders } from '../../scenes/index';
 import { FulcrumError, Shape, stateHash, World, type WorldDef } from '../../src/index';
 import type { SolverTeam } from '../../src/parallel/team';
+import { WorkerWorld } from '../../src/worker/index';
 import { workerScript } from '../helpers/worker-script';
 
 /*
@@ -127,6 +128,37 @@ describe('a world whose contacts several threads solve', () => {
     world.createBody({ type: 'dynamic' }).createShape(Shape.circle(0.5));
     world.step(1 / 60);
     expect(world.bodyCount).toBe(1);
+  });
+
+  it('a WorkerWorld takes workers for its world: same bits as a World; bad values thrown at the call', async () => {
+    const remote = await WorkerWorld.create({ workers: 2, workerUrl, worker: { url: workerScript() } });
+    const local = new World();
+    // the world in the worker starts its own worker while it steps: empty steps until a step says it ran
+    // on two threads (the count of these steps varies; both worlds take the same ones)
+    for (let i = 0; i < 100_000 && remote.workers === 1; i++) {
+      await remote.step(1 / 60);
+      local.step(1 / 60);
+    }
+    expect(remote.workers).toBe(2);
+    for (const world of [remote, local]) {
+      world.createBody().createShape(Shape.box(20, 0.5));
+      for (let k = 0; k < 600; k++) {
+        const body = world.createBody({
+          type: 'dynamic',
+          position: { x: -12 + (k % 25), y: 1 + Math.floor(k / 25) },
+        });
+        body.createShape(Shape.box(0.45, 0.45));
+      }
+    }
+    for (let i = 0; i < 90; i++) {
+      await remote.step(1 / 60);
+      local.step(1 / 60);
+    }
+    expect(await remote.stateHash()).toBe(stateHash(local));
+    remote.terminate();
+    // checked at the call, as WorkerWorld.create checks the rest of the definition
+    expect(() => WorkerWorld.create({ workers: 0 })).toThrow(FulcrumError);
+    expect(() => WorkerWorld.create({ workers: 2, workerUrl: 7 as unknown as string })).toThrow(/workerUrl/);
   });
 
   it('workers 1 starts none', async () => {
