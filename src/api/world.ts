@@ -18,6 +18,7 @@ import type { Rot, Vec2 } from '../math/vec2';
 import type { SolverTeam } from '../parallel/team';
 import type { CastHit, QueryFilter, QueryTransform } from '../query/index';
 import * as queries from '../query/index';
+import { CONTACT_PASSES } from '../solver/contact-team';
 import { BodyFlag, BodyKind, BodyState } from '../store/body-store';
 import { stepWorld } from '../world/step';
 import { WorldCore } from '../world/world-core';
@@ -134,7 +135,7 @@ export class World {
     const { SolverTeam } = await import('../parallel/team');
     let team: SolverTeam;
     try {
-      team = await SolverTeam.start(threads, url);
+      team = await SolverTeam.start(threads, url, CONTACT_PASSES);
     } catch (error) {
       throw new FulcrumError(`the world's ${threads - 1} solver workers could not start: ${error}`, {
         cause: error,

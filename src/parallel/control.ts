@@ -1,11 +1,5 @@
-import { FulcrumError } from '../core/errors';
-import {
-  applyRestitution,
-  type ContactConstraints,
-  solveContacts,
-  warmStartContacts,
-} from '../solver/contact-solver';
-import { COLORS } from '../solver/graph-color';
+import type { ContactConstraints } from '../solver/contact-solver';
+import type { ContactPasses } from '../solver/contact-team';
 
 /*
  * The control block a team's threads share (an Int32Array on a SharedArrayBuffer) and the code both
@@ -47,12 +41,24 @@ export enum Pass {
   STOP = 4,
 }
 
-/** @internal the most phases a plan has: a colour each and the overflow */
-export const MAX_PHASES = COLORS + 1;
+/** @internal the control block's length in Int32 for `threads` threads and `colors` colours */
+export function controlLength(threads: number, colors: number): number {
+  // a phase per colour and the overflow's
+  return Control.PLAN + (colors + 1) * (threads + 1);
+}
 
-/** @internal the control block's length in Int32 for `threads` threads */
-export function controlLength(threads: number): number {
-  return Control.PLAN + MAX_PHASES * (threads + 1);
+/** @internal What a thread of a team works with. */
+export interface TeamThread {
+  readonly control: Int32Array;
+  readonly params: Float64Array;
+  readonly thread: number;
+  readonly threads: number;
+  /** whether it may block in Atomics.wait: a browser page's main thread may not */
+  readonly canSleep: boolean;
+  readonly passes: ContactPasses;
+  /** the columns it solves on: its constraints' and the bodies' state */
+  cc: ContactConstraints;
+  state: Float64Array;
 }
 
 /** spins at a barrier between looks at the clock */
@@ -69,7 +75,8 @@ const SPINS_BEFORE_SLEEP = 1 << 14;
  * given a core yet gets one. The generation is read before arriving, so a thread cannot miss the
  * round it arrives in.
  */
-export function barrier(control: Int32Array, threads: number, canSleep: boolean): void {
+export function barrier(team: TeamThread): void {
+  const { control, threads, canSleep } = team;
   const generation = Atomics.load(control, Control.GENERATION);
   if (Atomics.add(control, Control.ARRIVED, 1) === threads - 1) {
     Atomics.store(control, Control.ARRIVED, 0);
@@ -88,7 +95,7 @@ export function barrier(control: Int32Array, threads: number, canSleep: boolean)
     const now = Date.now();
     if (deadline === 0) deadline = now + BARRIER_PATIENCE_MS;
     else if (now > deadline) {
-      throw new FulcrumError(
+      throw team.passes.error(
         `a thread of the world's team did not reach a barrier within ${BARRIER_PATIENCE_MS} ms: the step cannot finish`,
       );
     }
@@ -105,41 +112,26 @@ export function awaitPass(control: Int32Array, seen: number): number {
   return Atomics.load(control, Control.EPOCH);
 }
 
-/** @internal Runs thread `thread`'s share of every phase of the pass, with a barrier after each. */
-export function runPass(
-  pass: Pass,
-  control: Int32Array,
-  params: Float64Array,
-  cc: ContactConstraints,
-  state: Float64Array,
-  thread: number,
-  threads: number,
-  canSleep: boolean,
-): void {
+/** @internal Runs the thread's share of every phase of the pass, with a barrier after each. */
+export function runPass(team: TeamThread, pass: Pass): void {
+  const { control, params, passes, cc, state } = team;
   const phases = control[Control.PHASES];
-  const stride = threads + 1;
+  const stride = team.threads + 1;
   for (let p = 0; p < phases; p++) {
-    const at = Control.PLAN + p * stride + thread;
+    const at = Control.PLAN + p * stride + team.thread;
     const from = control[at];
     const to = control[at + 1];
     if (from < to) {
       if (pass === Pass.SOLVE) {
-        solveContacts(
-          cc,
-          state,
-          params[Param.INV_H],
-          params[Param.USE_BIAS] === 1,
-          params[Param.MAX_PUSH_SPEED],
-          from,
-          to,
-        );
+        const useBias = params[Param.USE_BIAS] === 1;
+        passes.solve(cc, state, params[Param.INV_H], useBias, params[Param.MAX_PUSH_SPEED], from, to);
       } else if (pass === Pass.WARM_START) {
-        warmStartContacts(cc, state, from, to);
+        passes.warmStart(cc, state, from, to);
       } else {
-        applyRestitution(cc, state, params[Param.THRESHOLD], from, to);
+        passes.restitution(cc, state, params[Param.THRESHOLD], from, to);
       }
     }
-    barrier(control, threads, canSleep);
+    barrier(team);
   }
 }
 

@@ -6,7 +6,8 @@
  */
 
 import { ContactConstraints } from '../solver/contact-solver';
-import { awaitPass, barrier, Control, Pass, runPass, type TeamColumns } from './control';
+import { CONTACT_PASSES } from '../solver/contact-team';
+import { awaitPass, barrier, Control, Pass, runPass, type TeamColumns, type TeamThread } from './control';
 
 /** @internal The first message a worker gets. */
 export interface TeamStart {
@@ -24,38 +25,39 @@ interface Port {
 }
 
 function serve(port: Port): (message: TeamMessage) => void {
-  let start: TeamStart | null = null;
-  let state: Float64Array = new Float64Array(0);
-  const cc = new ContactConstraints();
+  let team: TeamThread | null = null;
   let seen = 0;
   // Runs passes until one asks for the event loop (new columns) or the end; a worker spends its life
   // here, between passes spinning or asleep in Atomics.wait.
-  const work = (team: TeamStart): void => {
-    const { control, params, thread, threads } = team;
+  const work = (team: TeamThread): void => {
+    const control = team.control;
     for (;;) {
       seen = awaitPass(control, seen);
       const pass = control[Control.PASS] as Pass;
       if (pass === Pass.BIND || pass === Pass.STOP) return;
-      runPass(pass, control, params, cc, state, thread, threads, true);
+      runPass(team, pass);
     }
   };
   return (message) => {
     if ('start' in message) {
-      start = message.start;
-      seen = Atomics.load(start.control, Control.EPOCH);
+      const { control, params, thread, threads } = message.start;
+      const cc = new ContactConstraints();
+      team = { control, params, thread, threads, canSleep: true, passes: CONTACT_PASSES, cc, state: cc.data };
+      seen = Atomics.load(control, Control.EPOCH);
       port.postMessage('ready');
-      work(start);
+      work(team);
       return;
     }
-    if (start === null) throw new Error('fulcrum: a solver worker got columns before its start');
-    state = message.columns.state;
-    cc.data = message.columns.data;
-    cc.ids = message.columns.ids;
-    cc.softness = message.columns.softness;
-    cc.restitution = message.columns.restitution;
+    if (team === null) throw new Error('fulcrum: a solver worker got columns before its start');
+    const columns = message.columns;
+    team.state = columns.state;
+    team.cc.data = columns.data;
+    team.cc.ids = columns.ids;
+    team.cc.softness = columns.softness;
+    team.cc.restitution = columns.restitution;
     // tells the calling thread that this worker solves on the new columns
-    barrier(start.control, start.threads, true);
-    work(start);
+    barrier(team);
+    work(team);
   };
 }
 

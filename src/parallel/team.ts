@@ -1,8 +1,17 @@
 import type { ContactConstraints } from '../solver/contact-solver';
-import type { ContactTeam } from '../solver/contact-team';
-import { COLORS, type GraphColoring } from '../solver/graph-color';
+import type { ContactPasses, ContactTeam } from '../solver/contact-team';
+import type { GraphColoring } from '../solver/graph-color';
 import type { BodyStore } from '../store/body-store';
-import { barrier, Control, controlLength, Param, Pass, runPass, type TeamColumns } from './control';
+import {
+  barrier,
+  Control,
+  controlLength,
+  Param,
+  Pass,
+  runPass,
+  type TeamColumns,
+  type TeamThread,
+} from './control';
 import type { TeamMessage } from './solver-worker';
 import { startThread, type Thread } from './thread';
 
@@ -14,8 +23,6 @@ const MIN_PER_THREAD = 64;
 /** below this many constraints in a step the team stays idle: one thread is faster */
 const MIN_CONSTRAINTS = 512;
 
-type Shareable = Float64Array | Int32Array;
-
 function mayBlock(): boolean {
   try {
     Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 1, 0);
@@ -25,8 +32,8 @@ function mayBlock(): boolean {
   }
 }
 
-function isShared(a: Shareable): boolean {
-  return typeof SharedArrayBuffer === 'function' && a.buffer instanceof SharedArrayBuffer;
+function isShared(a: Float64Array | Int32Array): boolean {
+  return a.buffer instanceof SharedArrayBuffer;
 }
 
 function sharedF64(a: Float64Array): Float64Array {
@@ -50,11 +57,9 @@ function sharedI32(a: Int32Array): Int32Array {
  */
 export class SolverTeam implements ContactTeam {
   readonly threads: number;
-  private readonly control: Int32Array;
-  private readonly params: Float64Array;
   private readonly workers: Thread[];
-  private cc: ContactConstraints | null = null;
-  private state: Float64Array = new Float64Array(0);
+  /** this thread's side: thread 0; its `cc` is a view of the world's constraints' columns */
+  private readonly self: TeamThread;
   /** the columns the workers solve on */
   private readonly bound: TeamColumns = {
     state: new Float64Array(0),
@@ -63,27 +68,30 @@ export class SolverTeam implements ContactTeam {
     softness: new Float64Array(0),
     restitution: new Float64Array(0),
   };
+  private readonly colors: number;
   private stopped = false;
-  /** whether this thread may block in Atomics.wait: a browser page's main thread may not */
-  private readonly canSleep = mayBlock();
   /** steps whose contacts the team solved: how a test knows the workers did the work */
   parallelSteps = 0;
   /** the thresholds below which a colour or a step stays on this thread (tests lower them) */
   minPerThread = MIN_PER_THREAD;
   minConstraints = MIN_CONSTRAINTS;
 
-  private constructor(workers: Thread[], control: Int32Array, params: Float64Array) {
+  private constructor(workers: Thread[], self: TeamThread) {
     this.workers = workers;
-    this.threads = workers.length + 1;
-    this.control = control;
-    this.params = params;
+    this.threads = self.threads;
+    this.self = self;
+    this.colors = self.passes.colors;
   }
 
   /** Starts `threads - 1` workers on `url`; resolves once every one waits for passes. */
-  static async start(threads: number, url?: URL | string): Promise<SolverTeam> {
+  static async start(
+    threads: number,
+    url: URL | string | undefined,
+    passes: ContactPasses,
+  ): Promise<SolverTeam> {
     // written out in full, so that bundlers find the script
     const script = url ?? new URL('./solver-worker.js', import.meta.url);
-    const control = new Int32Array(new SharedArrayBuffer(controlLength(threads) * 4));
+    const control = new Int32Array(new SharedArrayBuffer(controlLength(threads, passes.colors) * 4));
     const params = new Float64Array(new SharedArrayBuffer(Param.SIZE * 8));
     const workers: Thread[] = [];
     try {
@@ -98,13 +106,24 @@ export class SolverTeam implements ContactTeam {
       for (const worker of workers) worker.end();
       throw error;
     }
-    return new SolverTeam(workers, control, params);
+    // thread 0's constraints are the world's, handed to begin() before any pass: none until then
+    const self: TeamThread = {
+      control,
+      params,
+      thread: 0,
+      threads,
+      canSleep: mayBlock(),
+      passes,
+      cc: null as unknown as ContactConstraints,
+      state: new Float64Array(0),
+    };
+    return new SolverTeam(workers, self);
   }
 
   shareBodies(bodies: BodyStore): void {
     if (this.stopped) return;
     bodies.state = sharedF64(bodies.state);
-    this.state = bodies.state;
+    this.self.state = bodies.state;
   }
 
   begin(cc: ContactConstraints, coloring: GraphColoring): boolean {
@@ -113,7 +132,7 @@ export class SolverTeam implements ContactTeam {
     cc.ids = sharedI32(cc.ids);
     cc.softness = sharedF64(cc.softness);
     cc.restitution = sharedF64(cc.restitution);
-    this.cc = cc;
+    this.self.cc = cc;
     this.bind(cc);
     this.plan(coloring);
     this.parallelSteps++;
@@ -123,8 +142,9 @@ export class SolverTeam implements ContactTeam {
   /** Posts the columns to the workers if they moved since the last step and waits until they took them. */
   private bind(cc: ContactConstraints): void {
     const b = this.bound;
+    const state = this.self.state;
     if (
-      b.state === this.state &&
+      b.state === state &&
       b.data === cc.data &&
       b.ids === cc.ids &&
       b.softness === cc.softness &&
@@ -132,7 +152,7 @@ export class SolverTeam implements ContactTeam {
     ) {
       return;
     }
-    b.state = this.state;
+    b.state = state;
     b.data = cc.data;
     b.ids = cc.ids;
     b.softness = cc.softness;
@@ -140,7 +160,7 @@ export class SolverTeam implements ContactTeam {
     const message: TeamMessage = { columns: { ...b } };
     for (const worker of this.workers) worker.post(message);
     this.dispatch(Pass.BIND);
-    barrier(this.control, this.threads, this.canSleep);
+    barrier(this.self);
   }
 
   /**
@@ -149,21 +169,20 @@ export class SolverTeam implements ContactTeam {
    * overflow's constraints, which may share bodies, on this thread alone, last.
    */
   private plan(coloring: GraphColoring): void {
-    const control = this.control;
+    const control = this.self.control;
     const threads = this.threads;
     const stride = threads + 1;
     let phases = 0;
     let alone = false;
     let start = 0;
-    for (let c = 0; c <= COLORS; c++) {
+    for (let c = 0; c <= this.colors; c++) {
       const end = coloring.colorEnd(c);
       if (end === start) continue;
-      const split = c < COLORS && end - start >= this.minPerThread * threads;
+      const split = c < this.colors && end - start >= this.minPerThread * threads;
       const at = Control.PLAN + phases * stride;
       if (!split && alone) {
         // this thread's phase before goes on to the end of this colour
-        control[at - stride + 1] = end;
-        for (let t = 2; t <= threads; t++) control[at - stride + t] = end;
+        for (let t = 1; t <= threads; t++) control[at - stride + t] = end;
       } else {
         control[at] = start;
         for (let t = 1; t < threads; t++)
@@ -178,23 +197,15 @@ export class SolverTeam implements ContactTeam {
   }
 
   private dispatch(pass: Pass): void {
-    this.control[Control.PASS] = pass;
-    Atomics.add(this.control, Control.EPOCH, 1);
-    Atomics.notify(this.control, Control.EPOCH);
+    const control = this.self.control;
+    control[Control.PASS] = pass;
+    Atomics.add(control, Control.EPOCH, 1);
+    Atomics.notify(control, Control.EPOCH);
   }
 
   private run(pass: Pass): void {
     this.dispatch(pass);
-    runPass(
-      pass,
-      this.control,
-      this.params,
-      this.cc as ContactConstraints,
-      this.state,
-      0,
-      this.threads,
-      this.canSleep,
-    );
+    runPass(this.self, pass);
   }
 
   warmStart(): void {
@@ -202,14 +213,15 @@ export class SolverTeam implements ContactTeam {
   }
 
   solve(invH: number, useBias: boolean, maxPushSpeed: number): void {
-    this.params[Param.INV_H] = invH;
-    this.params[Param.USE_BIAS] = useBias ? 1 : 0;
-    this.params[Param.MAX_PUSH_SPEED] = maxPushSpeed;
+    const params = this.self.params;
+    params[Param.INV_H] = invH;
+    params[Param.USE_BIAS] = useBias ? 1 : 0;
+    params[Param.MAX_PUSH_SPEED] = maxPushSpeed;
     this.run(Pass.SOLVE);
   }
 
   restitution(threshold: number): void {
-    this.params[Param.THRESHOLD] = threshold;
+    this.self.params[Param.THRESHOLD] = threshold;
     this.run(Pass.RESTITUTION);
   }
 

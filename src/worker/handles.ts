@@ -47,7 +47,7 @@ export interface WorkerContactData {
   points: ContactPointData[];
 }
 
-/** The settings of a body made by `def` (checked and completed). */
+/** @internal The settings of a body made by `def` (checked and completed). */
 export function settingsOf(def: ResolvedBodyDef): BodySettings {
   return {
     linearDamping: def.linearDamping,
