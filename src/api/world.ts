@@ -121,6 +121,7 @@ export class World {
     // a world whose workers failed steps on one thread: that is not an unhandled error of the program
     this.#workersReady.catch(() => {});
   }
+
   /**
    * Resolves with the number of threads that solve the steps once the workers have started (1 when
    * `workers` is 1 or SharedArrayBuffer is missing); rejects if they could not start, and the world
@@ -155,7 +156,10 @@ export class World {
     return this.#team === null ? 1 : this.#team.threads;
   }
 
-  /** Ends the world's workers (`workers`); it steps on one thread from then on. */
+  /**
+   * Ends the world's workers (`workers`); it steps on one thread from then on. A world with workers
+   * that is dropped without it keeps their threads asleep until the program ends.
+   */
   dispose(): void {
     this.#disposed = true;
     this.#team?.stop();

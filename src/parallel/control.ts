@@ -1,5 +1,8 @@
 import type { ContactConstraints } from '../solver/contact-solver';
 import type { ContactPasses } from '../solver/contact-team';
+import type { BodyStore } from '../store/body-store';
+import type { ContactStore } from '../store/contact-store';
+import type { ShapeStore } from '../store/shape-store';
 
 /*
  * The control block a team's threads share (an Int32Array on a SharedArrayBuffer) and the code both
@@ -18,6 +21,10 @@ export enum Control {
   GENERATION = 3,
   /** phases in the plan */
   PHASES = 4,
+  /** the step's constraints */
+  COUNT = 5,
+  /** set to 1 by a thread whose share of the preparation found a heavy pair */
+  HEAVY = 6,
   /** the plan: per phase, threads + 1 constraint indices, thread t solving from the t-th to the next */
   PLAN = 8,
 }
@@ -28,7 +35,8 @@ export enum Param {
   MAX_PUSH_SPEED = 1,
   THRESHOLD = 2,
   USE_BIAS = 3,
-  SIZE = 4,
+  FRICTION_MIN = 4,
+  SIZE = 5,
 }
 
 /** @internal What a worker is asked to do. */
@@ -36,9 +44,40 @@ export enum Pass {
   WARM_START = 0,
   SOLVE = 1,
   RESTITUTION = 2,
+  PREPARE = 3,
+  STORE = 4,
   /** go back to the event loop and take the columns posted to it (they were moved or grown) */
-  BIND = 3,
-  STOP = 4,
+  BIND = 5,
+  STOP = 6,
+}
+
+/** @internal The columns the passes read or write, by owner: what a team shares and binds. */
+export const TEAM_COLUMNS = {
+  cc: ['data', 'ids', 'softness', 'restitution'],
+  bodies: ['state', 'invMass', 'invInertia', 'cx', 'cy'],
+  contacts: [
+    'bodyA',
+    'bodyB',
+    'shapeA',
+    'shapeB',
+    'normalX',
+    'normalY',
+    'pointCount',
+    'pointX',
+    'pointY',
+    'separation',
+    'normalImpulse',
+    'tangentImpulse',
+    'maxNormalImpulse',
+    'approachSpeed',
+  ],
+  shapes: ['friction', 'restitution', 'radius'],
+} as const;
+
+/** @internal A team's columns as posted to a worker: by owner and name (TEAM_COLUMNS), and the order. */
+export interface TeamColumns {
+  order: Int32Array;
+  owners: Record<keyof typeof TEAM_COLUMNS, Record<string, Float64Array | Int32Array | Uint8Array>>;
 }
 
 /** @internal the control block's length in Int32 for `threads` threads and `colors` colours */
@@ -56,9 +95,12 @@ export interface TeamThread {
   /** whether it may block in Atomics.wait: a browser page's main thread may not */
   readonly canSleep: boolean;
   readonly passes: ContactPasses;
-  /** the columns it solves on: its constraints' and the bodies' state */
+  /** the columns it works on: views of the world's (a worker's hold the columns posted to it) */
   cc: ContactConstraints;
-  state: Float64Array;
+  bodies: BodyStore;
+  contacts: ContactStore;
+  shapes: ShapeStore;
+  order: Int32Array;
 }
 
 /** spins at a barrier between looks at the clock */
@@ -112,9 +154,20 @@ export function awaitPass(control: Int32Array, seen: number): number {
   return Atomics.load(control, Control.EPOCH);
 }
 
-/** @internal Runs the thread's share of every phase of the pass, with a barrier after each. */
+/** @internal Runs the thread's share of the pass: of every phase of the plan, or of all constraints. */
 export function runPass(team: TeamThread, pass: Pass): void {
-  const { control, params, passes, cc, state } = team;
+  if (pass === Pass.PREPARE || pass === Pass.STORE) {
+    // each constraint on its own: one even share of them per thread
+    const count = team.control[Control.COUNT];
+    const from = Math.floor((count * team.thread) / team.threads);
+    const to = Math.floor((count * (team.thread + 1)) / team.threads);
+    if (pass === Pass.STORE) team.passes.store(team.cc, team.contacts, from, to);
+    else if (prepareShare(team, from, to)) Atomics.store(team.control, Control.HEAVY, 1);
+    barrier(team);
+    return;
+  }
+  const { control, params, passes, cc } = team;
+  const state = team.bodies.state;
   const phases = control[Control.PHASES];
   const stride = team.threads + 1;
   for (let p = 0; p < phases; p++) {
@@ -135,11 +188,16 @@ export function runPass(team: TeamThread, pass: Pass): void {
   }
 }
 
-/** @internal The columns a worker solves on, as posted to it. */
-export interface TeamColumns {
-  state: Float64Array;
-  data: Float64Array;
-  ids: Int32Array;
-  softness: Float64Array;
-  restitution: Float64Array;
+function prepareShare(team: TeamThread, from: number, to: number): boolean {
+  const frictionMin = team.params[Param.FRICTION_MIN] === 1;
+  return team.passes.prepare(
+    team.cc,
+    team.order,
+    from,
+    to,
+    team.contacts,
+    team.bodies,
+    team.shapes,
+    frictionMin,
+  );
 }

@@ -7,6 +7,9 @@
 
 import { ContactConstraints } from '../solver/contact-solver';
 import { CONTACT_PASSES } from '../solver/contact-team';
+import type { BodyStore } from '../store/body-store';
+import type { ContactStore } from '../store/contact-store';
+import type { ShapeStore } from '../store/shape-store';
 import { awaitPass, barrier, Control, Pass, runPass, type TeamColumns, type TeamThread } from './control';
 
 /** @internal The first message a worker gets. */
@@ -41,21 +44,33 @@ function serve(port: Port): (message: TeamMessage) => void {
   return (message) => {
     if ('start' in message) {
       const { control, params, thread, threads } = message.start;
-      const cc = new ContactConstraints();
-      team = { control, params, thread, threads, canSleep: true, passes: CONTACT_PASSES, cc, state: cc.data };
+      // the stores hold only the columns the passes read, as posted (TEAM_COLUMNS)
+      team = {
+        control,
+        params,
+        thread,
+        threads,
+        canSleep: true,
+        passes: CONTACT_PASSES,
+        cc: new ContactConstraints(),
+        bodies: {} as BodyStore,
+        contacts: {} as ContactStore,
+        shapes: {} as ShapeStore,
+        order: new Int32Array(0),
+      };
       seen = Atomics.load(control, Control.EPOCH);
       port.postMessage('ready');
       work(team);
       return;
     }
     if (team === null) throw new Error('fulcrum: a solver worker got columns before its start');
-    const columns = message.columns;
-    team.state = columns.state;
-    team.cc.data = columns.data;
-    team.cc.ids = columns.ids;
-    team.cc.softness = columns.softness;
-    team.cc.restitution = columns.restitution;
-    // tells the calling thread that this worker solves on the new columns
+    const { owners, order } = message.columns;
+    Object.assign(team.cc, owners.cc);
+    Object.assign(team.bodies, owners.bodies);
+    Object.assign(team.contacts, owners.contacts);
+    Object.assign(team.shapes, owners.shapes);
+    team.order = order;
+    // tells the calling thread that this worker works on the new columns
     barrier(team);
     work(team);
   };

@@ -2,6 +2,8 @@ import type { ContactConstraints } from '../solver/contact-solver';
 import type { ContactPasses, ContactTeam } from '../solver/contact-team';
 import type { GraphColoring } from '../solver/graph-color';
 import type { BodyStore } from '../store/body-store';
+import type { ContactStore } from '../store/contact-store';
+import type { ShapeStore } from '../store/shape-store';
 import {
   barrier,
   Control,
@@ -9,6 +11,7 @@ import {
   Param,
   Pass,
   runPass,
+  TEAM_COLUMNS,
   type TeamColumns,
   type TeamThread,
 } from './control';
@@ -32,22 +35,29 @@ function mayBlock(): boolean {
   }
 }
 
-function isShared(a: Float64Array | Int32Array): boolean {
-  return a.buffer instanceof SharedArrayBuffer;
-}
+type Column = Float64Array | Int32Array | Uint8Array;
 
-function sharedF64(a: Float64Array): Float64Array {
-  if (isShared(a)) return a;
-  const b = new Float64Array(new SharedArrayBuffer(a.byteLength));
-  b.set(a);
+/** `a`, or a copy of it in shared memory if it is not there yet. */
+function shared<T extends Column>(a: T): T {
+  if (a.buffer instanceof SharedArrayBuffer) return a;
+  const b = new (a.constructor as new (buffer: SharedArrayBuffer) => T)(new SharedArrayBuffer(a.byteLength));
+  b.set(a as never);
   return b;
 }
 
-function sharedI32(a: Int32Array): Int32Array {
-  if (isShared(a)) return a;
-  const b = new Int32Array(new SharedArrayBuffer(a.byteLength));
-  b.set(a);
-  return b;
+/** Moves `owner`'s columns `names` into shared memory; true if one of them moved since `bound`. */
+function shareColumns(owner: object, names: readonly string[], bound: Record<string, Column>): boolean {
+  const columns = owner as Record<string, Column>;
+  let moved = false;
+  for (const name of names) {
+    const column = shared(columns[name]);
+    columns[name] = column;
+    if (bound[name] !== column) {
+      bound[name] = column;
+      moved = true;
+    }
+  }
+  return moved;
 }
 
 /**
@@ -60,16 +70,15 @@ export class SolverTeam implements ContactTeam {
   private readonly workers: Thread[];
   /** this thread's side: thread 0; its `cc` is a view of the world's constraints' columns */
   private readonly self: TeamThread;
-  /** the columns the workers solve on */
+  /** the columns the workers work on */
   private readonly bound: TeamColumns = {
-    state: new Float64Array(0),
-    data: new Float64Array(0),
-    ids: new Int32Array(0),
-    softness: new Float64Array(0),
-    restitution: new Float64Array(0),
+    order: new Int32Array(0),
+    owners: { cc: {}, bodies: {}, contacts: {}, shapes: {} },
   };
   private readonly colors: number;
   private stopped = false;
+  /** whether shareBodies moved a body column the workers have not been given yet */
+  private moved = false;
   /** steps whose contacts the team solved: how a test knows the workers did the work */
   parallelSteps = 0;
   /** the thresholds below which a colour or a step stays on this thread (tests lower them) */
@@ -106,7 +115,7 @@ export class SolverTeam implements ContactTeam {
       for (const worker of workers) worker.end();
       throw error;
     }
-    // thread 0's constraints are the world's, handed to begin() before any pass: none until then
+    // thread 0 works on the world's own columns, handed to begin() before any pass: none until then
     const self: TeamThread = {
       control,
       params,
@@ -115,49 +124,68 @@ export class SolverTeam implements ContactTeam {
       canSleep: mayBlock(),
       passes,
       cc: null as unknown as ContactConstraints,
-      state: new Float64Array(0),
+      bodies: null as unknown as BodyStore,
+      contacts: null as unknown as ContactStore,
+      shapes: null as unknown as ShapeStore,
+      order: new Int32Array(0),
     };
     return new SolverTeam(workers, self);
   }
 
   shareBodies(bodies: BodyStore): void {
     if (this.stopped) return;
-    bodies.state = sharedF64(bodies.state);
-    this.self.state = bodies.state;
+    // before the step hands the columns to others (the joints' context): all of them, now
+    if (shareColumns(bodies, TEAM_COLUMNS.bodies, this.bound.owners.bodies)) this.moved = true;
   }
 
-  begin(cc: ContactConstraints, coloring: GraphColoring): boolean {
+  begin(
+    cc: ContactConstraints,
+    coloring: GraphColoring,
+    contacts: ContactStore,
+    bodies: BodyStore,
+    shapes: ShapeStore,
+  ): boolean {
     if (this.stopped || cc.count < this.minConstraints) return false;
-    cc.data = sharedF64(cc.data);
-    cc.ids = sharedI32(cc.ids);
-    cc.softness = sharedF64(cc.softness);
-    cc.restitution = sharedF64(cc.restitution);
-    this.self.cc = cc;
-    this.bind(cc);
+    const self = this.self;
+    self.cc = cc;
+    self.bodies = bodies;
+    self.contacts = contacts;
+    self.shapes = shapes;
+    const owners = this.bound.owners;
+    // every owner's columns are shared, whichever moved
+    let moved = this.moved;
+    moved = shareColumns(cc, TEAM_COLUMNS.cc, owners.cc) || moved;
+    moved = shareColumns(contacts, TEAM_COLUMNS.contacts, owners.contacts) || moved;
+    moved = shareColumns(shapes, TEAM_COLUMNS.shapes, owners.shapes) || moved;
+    coloring.order = shared(coloring.order);
+    self.order = coloring.order;
+    if (this.bound.order !== coloring.order) {
+      this.bound.order = coloring.order;
+      moved = true;
+    }
+    if (moved) this.bind();
+    this.moved = false;
     this.plan(coloring);
+    self.control[Control.COUNT] = cc.count;
     this.parallelSteps++;
     return true;
   }
 
-  /** Posts the columns to the workers if they moved since the last step and waits until they took them. */
-  private bind(cc: ContactConstraints): void {
+  /** Posts the columns to the workers and waits until they took them. */
+  private bind(): void {
     const b = this.bound;
-    const state = this.self.state;
-    if (
-      b.state === state &&
-      b.data === cc.data &&
-      b.ids === cc.ids &&
-      b.softness === cc.softness &&
-      b.restitution === cc.restitution
-    ) {
-      return;
-    }
-    b.state = state;
-    b.data = cc.data;
-    b.ids = cc.ids;
-    b.softness = cc.softness;
-    b.restitution = cc.restitution;
-    const message: TeamMessage = { columns: { ...b } };
+    const owners = b.owners;
+    const message: TeamMessage = {
+      columns: {
+        order: b.order,
+        owners: {
+          cc: { ...owners.cc },
+          bodies: { ...owners.bodies },
+          contacts: { ...owners.contacts },
+          shapes: { ...owners.shapes },
+        },
+      },
+    };
     for (const worker of this.workers) worker.post(message);
     this.dispatch(Pass.BIND);
     barrier(this.self);
@@ -208,6 +236,14 @@ export class SolverTeam implements ContactTeam {
     runPass(this.self, pass);
   }
 
+  prepare(frictionMin: boolean): boolean {
+    const control = this.self.control;
+    this.self.params[Param.FRICTION_MIN] = frictionMin ? 1 : 0;
+    control[Control.HEAVY] = 0;
+    this.run(Pass.PREPARE);
+    return control[Control.HEAVY] === 1;
+  }
+
   warmStart(): void {
     this.run(Pass.WARM_START);
   }
@@ -223,6 +259,10 @@ export class SolverTeam implements ContactTeam {
   restitution(threshold: number): void {
     this.self.params[Param.THRESHOLD] = threshold;
     this.run(Pass.RESTITUTION);
+  }
+
+  store(): void {
+    this.run(Pass.STORE);
   }
 
   /** Ends the workers; the world steps on one thread from then on. */

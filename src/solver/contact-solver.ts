@@ -198,7 +198,9 @@ export function setContactSoftness(
 const HEAVY_RATIO = 4;
 
 /**
- * Writes one constraint per contact of `order[0..count)`, in that order. Anchors are taken relative
+ * Writes one constraint per contact of `order[from..to)`, in that order, for a constraints list reserved
+ * for them. Returns whether one of them joins two moving bodies of which one is four or more times
+ * heavier (ContactConstraints.heavyPair). Anchors are taken relative
  * to the centres of mass at the start of the step and stay fixed through the substeps; the separation
  * is updated from the bodies' accumulated motion instead of recomputing the manifold. Contacts with a
  * body that contacts cannot move (no mass, no inertia), or between bodies of very different mass,
@@ -208,16 +210,14 @@ const HEAVY_RATIO = 4;
 export function prepareContacts(
   cc: ContactConstraints,
   order: Int32Array,
-  count: number,
+  from: number,
+  to: number,
   contacts: ContactStore,
   bodies: BodyStore,
   shapes: ShapeStore,
   frictionMin: boolean,
-): void {
-  cc.reserve(count);
-  // set before the loop, which must end the function (see listAwakeBodies in solver.ts)
-  cc.count = count;
-  cc.heavyPair = false;
+): boolean {
+  let heavyPair = false;
   const d = cc.data;
   const rd = cc.restitution;
   const pointX = contacts.pointX;
@@ -233,7 +233,7 @@ export function prepareContacts(
   const friction = shapes.friction;
   const restitution = shapes.restitution;
   const radius = shapes.radius;
-  for (let i = 0, n = count & IndexBound.MAX; i < n; i++) {
+  for (let i = from, n = to & IndexBound.MAX; i < n; i++) {
     const c = order[i];
     const a = contacts.bodyA[c];
     const b = contacts.bodyB[c];
@@ -247,7 +247,7 @@ export function prepareContacts(
     // stiffness follows the light body's mass, and under the heavy one's weight it would sink.
     const heavy = mA >= HEAVY_RATIO * mB || mB >= HEAVY_RATIO * mA;
     const anchored = (mA === 0 && iA === 0) || (mB === 0 && iB === 0) || heavy;
-    if (heavy && mA > 0 && mB > 0) cc.heavyPair = true;
+    if (heavy && mA > 0 && mB > 0) heavyPair = true;
     const nx = contacts.normalX[c];
     const ny = contacts.normalY[c];
     const cAx = cx[a];
@@ -339,6 +339,7 @@ export function prepareContacts(
       }
     }
   }
+  return heavyPair;
 }
 
 /** @internal Applies the impulses kept from the previous substep (or step) so the solver starts near the answer. */
@@ -1029,14 +1030,17 @@ export function applyRestitution(
 /** @internal Copies the impulses back to the contacts for warm starting next step and for hit events. */
 export function storeImpulses(
   cc: ContactConstraints,
-  normalImpulse: Float64Array,
-  tangentImpulse: Float64Array,
-  maxNormalImpulse: Float64Array,
-  approachSpeed: Float64Array,
+  contacts: ContactStore,
+  from: number,
+  to: number,
 ): void {
   const d = cc.data;
   const ids = cc.ids;
-  for (let i = 0, n = cc.count & IndexBound.MAX; i < n; i++) {
+  const normalImpulse = contacts.normalImpulse;
+  const tangentImpulse = contacts.tangentImpulse;
+  const maxNormalImpulse = contacts.maxNormalImpulse;
+  const approachSpeed = contacts.approachSpeed;
+  for (let i = from, n = to & IndexBound.MAX; i < n; i++) {
     const base = i * ContactField.STRIDE;
     const contact = ids[i * 3 + 2];
     const count = d[base + ContactField.COUNT];

@@ -1,9 +1,13 @@
 import { FulcrumError } from '../core/errors';
 import type { BodyStore } from '../store/body-store';
+import type { ContactStore } from '../store/contact-store';
+import type { ShapeStore } from '../store/shape-store';
 import {
   applyRestitution,
   type ContactConstraints,
+  prepareContacts,
   solveContacts,
+  storeImpulses,
   warmStartContacts,
 } from './contact-solver';
 import { COLORS, type GraphColoring } from './graph-color';
@@ -16,11 +20,24 @@ import { COLORS, type GraphColoring } from './graph-color';
 export interface ContactTeam {
   /** Moves the body columns the passes write into shared memory (where they are not yet). */
   shareBodies(bodies: BodyStore): void;
-  /** Shares this step's constraints and plans their colours; false: this step stays on one thread. */
-  begin(cc: ContactConstraints, coloring: GraphColoring): boolean;
+  /**
+   * Shares this step's constraints (reserved and counted, not yet prepared) and the columns their
+   * preparation reads, and plans their colours; false: this step stays on one thread.
+   */
+  begin(
+    cc: ContactConstraints,
+    coloring: GraphColoring,
+    contacts: ContactStore,
+    bodies: BodyStore,
+    shapes: ShapeStore,
+  ): boolean;
+  /** prepareContacts over the threads; returns ContactConstraints.heavyPair */
+  prepare(frictionMin: boolean): boolean;
   warmStart(): void;
   solve(invH: number, useBias: boolean, maxPushSpeed: number): void;
   restitution(threshold: number): void;
+  /** storeImpulses over the threads */
+  store(): void;
 }
 
 /**
@@ -29,9 +46,11 @@ export interface ContactTeam {
  * into more chunks for it.
  */
 export interface ContactPasses {
+  prepare: typeof prepareContacts;
   warmStart: typeof warmStartContacts;
   solve: typeof solveContacts;
   restitution: typeof applyRestitution;
+  store: typeof storeImpulses;
   /** colours of the colouring, its overflow not counted */
   colors: number;
   error(message: string): Error;
@@ -39,9 +58,11 @@ export interface ContactPasses {
 
 /** @internal */
 export const CONTACT_PASSES: Readonly<ContactPasses> = Object.freeze({
+  prepare: prepareContacts,
   warmStart: warmStartContacts,
   solve: solveContacts,
   restitution: applyRestitution,
+  store: storeImpulses,
   colors: COLORS,
   error: (message: string) => new FulcrumError(message),
 });

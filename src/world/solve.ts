@@ -156,8 +156,11 @@ function setSoftnessFor(work: WorkingMemory, cc: ContactConstraints, h: number):
   );
 }
 
-/** Builds one constraint per touching solid contact that has an awake body. */
-function prepareContacts(core: WorldCore, h: number): void {
+/**
+ * Builds one constraint per touching solid contact that has an awake body. Returns whether the
+ * world's team (`workers`) took this step's contacts.
+ */
+function prepareContacts(core: WorldCore, h: number): boolean {
   const contacts = core.contacts;
   const bodies = core.bodies;
   const cc = core.constraints;
@@ -166,10 +169,26 @@ function prepareContacts(core: WorldCore, h: number): void {
   coloring.begin(bodies.capacity, contacts.liveCount);
   addTouchingContacts(contacts, bodies, coloring);
   const total = coloring.finish();
-  prepareContactConstraints(cc, coloring.order, total, contacts, bodies, core.shapes, core.frictionMin);
+  cc.reserve(total);
+  cc.count = total;
+  const team = core.team;
+  const teamed = team !== null && team.begin(cc, coloring, contacts, bodies, core.shapes);
+  cc.heavyPair = teamed
+    ? team.prepare(core.frictionMin)
+    : prepareContactConstraints(
+        cc,
+        coloring.order,
+        0,
+        total,
+        contacts,
+        bodies,
+        core.shapes,
+        core.frictionMin,
+      );
   cc.supportCount = 0;
   cc.levelExcess = 0;
   if (cc.heavyPair) stiffenLoadedContacts(cc, bodies, core.gravityX, core.gravityY);
+  return teamed;
 }
 
 /**
@@ -225,16 +244,16 @@ export function solve(core: WorldCore, dt: number): void {
   const ctx = core.jointContext;
   const tree = core.jointTree;
   const hinges = core.hingeBatch;
-  const team = core.team;
   // before the joints take the body columns: the team may move them into shared memory
-  if (team !== null) team.shareBodies(core.bodies);
+  core.team?.shareBodies(core.bodies);
   prepareJoints(core, h);
   const treeBias = ctx.jointSoftness.biasRate;
   // the joints the tree alone solves are not warm started (see JointTree.project)
   const iterative = hinges.otherIterative;
   const iterativeCount = iterative.length;
   const jointSoft = ctx.jointSoftness;
-  prepareContacts(core, h);
+  // the world's team (`workers`), if it took this step's contacts
+  const team = prepareContacts(core, h) ? core.team : null;
   const fineFactor = splitFineIslands(core);
   const bodies = core.bodies;
   const state = bodies.state;
@@ -242,7 +261,7 @@ export function solve(core: WorldCore, dt: number): void {
   // Contacts of one colour share no body that contacts move, so the team solves a colour's contacts
   // on several threads at once with the same arithmetic in the same order per body: the same bits.
   // Islands stepped finer take their constraints out of the colour order: those steps stay on one thread.
-  const shared = team !== null && fineFactor === 1 && team.begin(cc, core.coloring);
+  const shared = team !== null && fineFactor === 1;
   const pushSpeed = settings.contactPushMaxSpeed;
   // the bodies and constraints stepped here: all but those of the islands stepped finer
   const awake = fineFactor > 1 ? core.fineIslands.coarse : core.awake;
@@ -288,14 +307,8 @@ export function solve(core: WorldCore, dt: number): void {
   tree.store(ctx);
   if (shared) team.restitution(settings.restitutionThreshold);
   else applyRestitution(cc, state, settings.restitutionThreshold, 0, cc.count);
-  const contacts = core.contacts;
-  storeImpulses(
-    cc,
-    contacts.normalImpulse,
-    contacts.tangentImpulse,
-    contacts.maxNormalImpulse,
-    contacts.approachSpeed,
-  );
+  if (team !== null) team.store();
+  else storeImpulses(cc, core.contacts, 0, cc.count);
   reportHits(core);
 }
 
