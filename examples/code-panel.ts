@@ -72,6 +72,8 @@ export class CodePanel {
 
   /** The demo whose code the panel shows (loaded now if the panel is open, else when it opens). */
   setDemo(demo: Demo | null): void {
+    // the same demo started again (Reset) keeps the file and the place in it
+    if (demo === this.demo) return;
     this.demo = demo;
     this.file = null;
     this.ticket++;

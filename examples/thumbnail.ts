@@ -12,7 +12,6 @@ const MAX_RATIO = 2;
 export class DemoThumbnail {
   readonly render: Render<AnyWorld>;
   readonly runner: Runner<AnyWorld>;
-  private readonly pointer: Pointer<AnyWorld>;
   private readonly cleanups: (() => void)[] = [];
   private instance: DemoInstance | null = null;
   private disposed = false;
@@ -27,9 +26,10 @@ export class DemoThumbnail {
       pixelRatio: Math.min(MAX_RATIO, window.devicePixelRatio || 1),
     });
     this.runner = new Runner<AnyWorld>({ render: this.render });
-    this.pointer = new Pointer<AnyWorld>({ render: this.render });
-    this.pointer.enabled = false;
-    // the pointer asks for every touch; a thumbnail leaves them to the page, which scrolls
+    // a pointer that hears nothing: a demo may subscribe to it, but the card's clicks, touches (the page
+    // scrolls) and context menu (open in a new tab) are the link's
+    const pointer = new Pointer<AnyWorld>({ render: this.render });
+    pointer.destroy();
     canvas.style.touchAction = '';
     this.render.flags = { ...defaultDebugDrawFlags, ...demo.flags };
     this.render.resize();
@@ -39,7 +39,7 @@ export class DemoThumbnail {
     const ctx: DemoContext = {
       render: this.render,
       runner: this.runner,
-      pointer: this.pointer,
+      pointer,
       stage,
       ui,
       preview: true,
@@ -78,7 +78,6 @@ export class DemoThumbnail {
     if (this.disposed) return;
     this.disposed = true;
     for (const cleanup of this.cleanups.splice(0).reverse()) cleanup();
-    this.pointer.destroy();
     this.instance?.dispose?.();
     this.instance = null;
     this.runner.setWorld(null);
