@@ -63,6 +63,8 @@ export class CodePanel {
 
   setOpen(open: boolean): void {
     this.panel.hidden = !open;
+    // the stage and the panel share their parent's grid while it is open
+    this.panel.parentElement?.classList.toggle('with-code', open);
     this.toggle.textContent = open ? 'Hide code' : 'Show code';
     this.toggle.setAttribute('aria-expanded', String(open));
     if (open && this.demo && this.file === null) this.show(this.demo, sourceFiles(this.demo)[0]);
