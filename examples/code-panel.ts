@@ -86,14 +86,20 @@ export class CodePanel {
 
   private show(demo: Demo, file: string | undefined): void {
     const files = sourceFiles(demo);
+    // the folder once, then a tab per file named by its own name: a folder of eleven files takes two lines
+    const folder = document.createElement('span');
+    folder.className = 'code-path';
+    folder.textContent = `examples${(file ?? './demos/').replace(/[^/]*$/, '').slice(1)}`;
     this.tabs.replaceChildren(
+      folder,
       ...files.map((path) => {
         const tab = document.createElement('button');
         tab.type = 'button';
         tab.className = 'code-tab';
         tab.setAttribute('role', 'tab');
         tab.setAttribute('aria-selected', String(path === file));
-        tab.textContent = `examples${path.slice(1)}`;
+        tab.title = `examples${path.slice(1)}`;
+        tab.textContent = path.slice(path.lastIndexOf('/') + 1);
         if (files.length > 1) tab.addEventListener('click', () => this.show(demo, path));
         return tab;
       }),

@@ -292,17 +292,31 @@ describe('the Show code panel', () => {
       expect(await open.page.textContent('#btn-code')).toBe('Hide code');
       const font = await open.page.$eval('#code-panel pre', (el) => getComputedStyle(el).fontFamily);
       expect(font).toMatch(/monospace/);
-      // the panel scrolls within itself
-      const overflow = await open.page.$eval('#code-panel pre', (el) => getComputedStyle(el).overflow);
-      expect(overflow).toBe('auto');
+      // the text scrolls within the panel, which is no taller than the stage beside it
+      const sizes = await open.page.evaluate(() => {
+        const pre = document.querySelector('#code-panel pre') as HTMLElement;
+        return {
+          overflow: getComputedStyle(pre).overflow,
+          scrolls: pre.scrollHeight > pre.clientHeight,
+          panel: (document.getElementById('code-panel') as HTMLElement).getBoundingClientRect().height,
+          stage: (document.getElementById('stage') as HTMLElement).getBoundingClientRect().height,
+          page: document.documentElement.scrollHeight,
+          window: window.innerHeight,
+        };
+      });
+      expect(sizes.overflow).toBe('auto');
+      expect(sizes.scrolls).toBe(true);
+      expect(sizes.panel).toBeLessThanOrEqual(sizes.stage + 1);
+      expect(sizes.page).toBeLessThanOrEqual(sizes.window);
 
       // another demo with the panel open: its source; a demo in a folder: a tab per file, demo.ts first
       await open.page.click('a[data-demo="slingshot"]');
       const slingshot = readFileSync(resolve(EXAMPLES, 'demos/slingshot/demo.ts'), 'utf8');
       await expect.poll(() => codeText(open.page)).toBe(slingshot);
-      const tabs = await open.page.$$eval('.code-tab', (els) => els.map((el) => el.textContent));
+      const tabs = await open.page.$$eval('.code-tab', (els) => els.map((el) => el.getAttribute('title')));
       expect(tabs[0]).toBe('examples/demos/slingshot/demo.ts');
       expect([...tabs].sort()).toEqual(sourceFilesOf('slingshot').sort());
+      expect(await open.page.textContent('.code-path')).toBe('examples/demos/slingshot/');
       await open.page.click('.code-tab:has-text("levels.ts")');
       const levels = readFileSync(resolve(EXAMPLES, 'demos/slingshot/levels.ts'), 'utf8');
       await expect.poll(() => codeText(open.page)).toBe(levels);
@@ -383,6 +397,11 @@ describe('the layout', () => {
           expect(view.overlaps, id).toEqual([]);
           expect(view.wrapped, id).toEqual([]);
           expect(view.outside, id).toEqual([]);
+          // beside the stage on a laptop, the code panel leaves the demo view within the window
+          if (size.width > 1000) {
+            const page = await open.page.evaluate(() => document.documentElement.scrollHeight);
+            expect(page, id).toBeLessThanOrEqual(size.height);
+          }
         }
         const scrollWidth = await open.page.evaluate(() => document.documentElement.scrollWidth);
         expect(scrollWidth).toBeLessThanOrEqual(size.width);
