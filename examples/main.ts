@@ -196,7 +196,7 @@ function showLanding(): void {
   exposeState();
 }
 
-/** Opens the demo the URL's hash names (#pyramid), or the landing view when it names none. */
+/** Opens the demo the URL's hash names (#pyramid), or the landing view when it names none (no hash, #gallery). */
 function route(): void {
   const id = decodeURIComponent(location.hash.replace(/^#\/?/, ''));
   const demo = findDemo(id);
