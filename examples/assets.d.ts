@@ -9,3 +9,11 @@ declare module '*?worker&url' {
   const url: string;
   export default url;
 }
+
+/** Vite's glob imports: `import.meta.glob('./dir/*.ts', { query: '?raw', import: 'default' })` gives a loader per file. */
+interface ImportMeta {
+  glob<T = unknown>(
+    pattern: string | string[],
+    options?: { query?: string; import?: string; eager?: false },
+  ): Record<string, () => Promise<T>>;
+}

@@ -9,6 +9,11 @@ export interface DemoContext {
   stage: HTMLElement;
   /** a layer over the stage for the demo's own buttons and text */
   ui: HTMLElement;
+  /**
+   * true when the demo runs as a thumbnail on the landing view: drawn small, stepped by the landing
+   * view, its buttons and panels in detached elements. It takes no keyboard (the page's keys scroll it).
+   */
+  preview: boolean;
   /** registers a clean-up to run when the demo ends (unsubscribe functions, timers) */
   track(cleanup: () => void): void;
   /** a line of text under the title: scores, counters, hints */

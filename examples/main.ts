@@ -1,4 +1,7 @@
-/** The gallery shell: the demo list, the controls, the readout, and the demo that is running. */
+/**
+ * The gallery shell: the landing view of cards (no demo in the URL's hash), or a demo with the list,
+ * the controls, the readout and its code.
+ */
 import {
   type AnyWorld,
   type DebugDrawFlags,
@@ -8,7 +11,9 @@ import {
   Render,
   Runner,
 } from '../src/render/index';
+import { CodePanel } from './code-panel';
 import type { Demo, DemoContext, DemoInstance } from './demo';
+import { Landing } from './landing';
 import { demos, findDemo } from './registry';
 
 function $(id: string): HTMLElement {
@@ -59,6 +64,9 @@ for (const demo of demos) {
   list.append(a);
 }
 
+const landing = new Landing($('cards'), demos);
+const codePanel = new CodePanel($('code-panel'), $('btn-code') as HTMLButtonElement);
+
 let current: Demo | null = null;
 let instance: DemoInstance | null = null;
 const cleanups: (() => void)[] = [];
@@ -105,6 +113,7 @@ function startDemo(demo: Demo): void {
     pointer,
     stage,
     ui,
+    preview: false,
     track: (cleanup) => cleanups.push(cleanup),
     setStatus: (text) => {
       $('demo-status').textContent = text;
@@ -125,9 +134,8 @@ function startDemo(demo: Demo): void {
   $('demo-title').textContent = demo.title;
   $('demo-description').textContent = demo.description;
   document.title = `${demo.title} — Fulcrum`;
-  list.querySelectorAll('a').forEach((a) => {
-    a.classList.toggle('active', a.dataset.demo === demo.id);
-  });
+  markActive(demo.id);
+  codePanel.setDemo(demo);
   const made = demo.create(ctx);
   if (!(made instanceof Promise)) {
     show(made);
@@ -154,9 +162,17 @@ function show(made: DemoInstance): void {
   exposeState();
 }
 
+function markActive(id: string | null): void {
+  list.querySelectorAll('a').forEach((a) => {
+    a.classList.toggle('active', a.dataset.demo === id || (id === null && a.id === 'home-link'));
+  });
+}
+
 function exposeState(): void {
   // for the end-to-end tests and the curious: window.gallery in the browser console
   (window as unknown as { gallery: unknown }).gallery = {
+    view: current ? 'demo' : 'landing',
+    landing,
     runner,
     render,
     pointer,
@@ -167,12 +183,35 @@ function exposeState(): void {
   };
 }
 
-function demoFromUrl(): Demo {
-  const id = decodeURIComponent(location.hash.replace(/^#\/?/, ''));
-  return findDemo(id) ?? demos[0];
+/** The landing view: the demo that ran is let go, the cards' thumbnails start. */
+function showLanding(): void {
+  stopDemo();
+  runner.stop();
+  current = null;
+  codePanel.setDemo(null);
+  document.body.classList.add('landing');
+  document.title = 'Fulcrum — demo gallery';
+  markActive(null);
+  landing.show();
+  exposeState();
 }
 
-window.addEventListener('hashchange', () => startDemo(demoFromUrl()));
+/** Opens the demo the URL's hash names (#pyramid), or the landing view when it names none (no hash, #gallery). */
+function route(): void {
+  const id = decodeURIComponent(location.hash.replace(/^#\/?/, ''));
+  const demo = findDemo(id);
+  if (!demo) {
+    showLanding();
+    return;
+  }
+  // the thumbnails' worlds go before the demo's is made
+  landing.hide();
+  document.body.classList.remove('landing');
+  startDemo(demo);
+  runner.start();
+}
+
+window.addEventListener('hashchange', route);
 
 const pauseButton = $('btn-pause');
 function setPaused(paused: boolean): void {
@@ -193,6 +232,8 @@ speed.addEventListener('change', () => {
 });
 window.addEventListener('keydown', (e) => {
   if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+  // the controls' keys act on a demo; the landing view leaves them to the page (space scrolls)
+  if (!current) return;
   if (e.key === ' ') {
     e.preventDefault();
     setPaused(!runner.paused);
@@ -223,5 +264,4 @@ setInterval(() => {
   stats.fps.textContent = runner.fps.toFixed(0);
 }, 250);
 
-startDemo(demoFromUrl());
-runner.start();
+route();

@@ -75,14 +75,15 @@ export const carDemo: Demo = {
     ctx.button('Brake', () => setDrive('brake'));
     ctx.button('Coast', () => setDrive('coast'));
     ctx.button('Forward ▶', () => setDrive('forward'));
-    ctx.track(
-      onKeys(['ArrowLeft', 'ArrowRight', 'a', 'd', 'b'], (key, down) => {
-        if (!down) setDrive('coast');
-        else if (key === 'ArrowRight' || key === 'd') setDrive('forward');
-        else if (key === 'ArrowLeft' || key === 'a') setDrive('back');
-        else setDrive('brake');
-      }),
-    );
+    if (!ctx.preview)
+      ctx.track(
+        onKeys(['ArrowLeft', 'ArrowRight', 'a', 'd', 'b'], (key, down) => {
+          if (!down) setDrive('coast');
+          else if (key === 'ArrowRight' || key === 'd') setDrive('forward');
+          else if (key === 'ArrowLeft' || key === 'a') setDrive('back');
+          else setDrive('brake');
+        }),
+      );
     let follow = true;
     const followButton = ctx.button('Camera: follow', () => {
       follow = !follow;

@@ -85,13 +85,14 @@ export const oneWayDemo: Demo = {
     let run = 0;
     let jump = false;
     let steps = 0;
-    ctx.track(
-      onKeys(['ArrowLeft', 'ArrowRight', 'ArrowUp', ' ', 'a', 'd', 'w'], (key, down) => {
-        if (key === 'ArrowUp' || key === ' ' || key === 'w') jump = down;
-        else if (key === 'ArrowLeft' || key === 'a') run = down ? -1 : 0;
-        else run = down ? 1 : 0;
-      }),
-    );
+    if (!ctx.preview)
+      ctx.track(
+        onKeys(['ArrowLeft', 'ArrowRight', 'ArrowUp', ' ', 'a', 'd', 'w'], (key, down) => {
+          if (key === 'ArrowUp' || key === ' ' || key === 'w') jump = down;
+          else if (key === 'ArrowLeft' || key === 'a') run = down ? -1 : 0;
+          else run = down ? 1 : 0;
+        }),
+      );
     let jumpOnce = false;
     ctx.button('Jump', () => {
       jumpOnce = true;

@@ -69,12 +69,13 @@ export const svgTerrainDemo: Demo = {
     ctx.button('◀ Back', () => drive(SPEED));
     ctx.button('Brake', () => drive(0));
     ctx.button('Forward ▶', () => drive(-SPEED));
-    ctx.track(
-      onKeys(['ArrowLeft', 'ArrowRight', 'a', 'd'], (key, down) => {
-        if (!down) drive(0);
-        else drive(key === 'ArrowRight' || key === 'd' ? -SPEED : SPEED);
-      }),
-    );
+    if (!ctx.preview)
+      ctx.track(
+        onKeys(['ArrowLeft', 'ArrowRight', 'a', 'd'], (key, down) => {
+          if (!down) drive(0);
+          else drive(key === 'ArrowRight' || key === 'd' ? -SPEED : SPEED);
+        }),
+      );
     ctx.render.setBodyStyle(chassis, { color: 0xe0a33a });
     for (const wheel of wheels) ctx.render.setBodyStyle(wheel, { color: 0x3c4250 });
 

@@ -9,14 +9,20 @@ export interface OpenDemo {
   close(): Promise<void>;
 }
 
-/** Opens `#id` in a new page and waits for the runner to have stepped a few times. */
-export async function openDemo(context: BrowserContext, baseUrl: string, id: string): Promise<OpenDemo> {
+/** A new page that records console errors and page errors. */
+async function pageWithErrors(context: BrowserContext): Promise<{ page: Page; errors: string[] }> {
   const page = await context.newPage();
   const errors: string[] = [];
   page.on('console', (message) => {
     if (message.type() === 'error') errors.push(`console: ${message.text()}`);
   });
   page.on('pageerror', (error) => errors.push(`page: ${error.message}`));
+  return { page, errors };
+}
+
+/** Opens `#id` in a new page and waits for the runner to have stepped a few times. */
+export async function openDemo(context: BrowserContext, baseUrl: string, id: string): Promise<OpenDemo> {
+  const { page, errors } = await pageWithErrors(context);
   await page.goto(`${baseUrl}#${id}`);
   await page.waitForFunction(
     (demo) => {
@@ -25,6 +31,16 @@ export async function openDemo(context: BrowserContext, baseUrl: string, id: str
     },
     id,
     { timeout: 20_000 },
+  );
+  return { page, errors, close: () => page.close() };
+}
+
+/** Opens the gallery with no demo in the URL (the landing view of cards) in a new page. */
+export async function openLanding(context: BrowserContext, baseUrl: string): Promise<OpenDemo> {
+  const { page, errors } = await pageWithErrors(context);
+  await page.goto(baseUrl);
+  await page.waitForFunction(
+    () => (window as unknown as { gallery?: { view: string } }).gallery?.view === 'landing',
   );
   return { page, errors, close: () => page.close() };
 }

@@ -115,6 +115,34 @@ describe('the gallery', () => {
   });
 });
 
+describe('the routes', () => {
+  it('opens the landing view for a hash that names no demo, and a demo for one that does', async () => {
+    const open = await openDemo(browser.context, url, 'golf');
+    try {
+      const view = () =>
+        open.page.evaluate(() => {
+          const g = (window as unknown as { gallery: { view: string; demo?: string } }).gallery;
+          return { view: g.view, demo: g.demo ?? null };
+        });
+      await open.page.goto(`${url}#no-such-demo`);
+      await open.page.waitForFunction(
+        () => (window as unknown as { gallery: { view: string } }).gallery.view === 'landing',
+      );
+      expect(await view()).toEqual({ view: 'landing', demo: null });
+      expect(await open.page.locator('#cards .card').count()).toBe(demos.length);
+      await open.page.goBack();
+      await open.page.waitForFunction(
+        () => (window as unknown as { gallery: { demo?: string } }).gallery.demo === 'golf',
+      );
+      expect(await view()).toEqual({ view: 'demo', demo: 'golf' });
+      expect(await open.page.isVisible('#landing')).toBe(false);
+      expect(open.errors).toEqual([]);
+    } finally {
+      await open.close();
+    }
+  });
+});
+
 describe('pointer drag', () => {
   /** position of the top box of the pyramid */
   const topBox = (page: import('playwright-core').Page) =>

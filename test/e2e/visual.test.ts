@@ -5,7 +5,9 @@
  * anti-aliasing that a different Chromium build may draw a little differently. A change that moves,
  * recolours or hides what a demo shows fails here: look at the picture written beside the stored one
  * under test-results/e2e/visual/, and if the change is wanted, store the new pictures with
- * `UPDATE_VISUALS=1 npx vitest run --config vitest.e2e.config.ts test/e2e/visual.test.ts`.
+ * `UPDATE_VISUALS=1 npx vitest run --config vitest.e2e.config.ts test/e2e/visual.test.ts` (one picture:
+ * `-t "<id> at"`). The landing view is stored as the window shows it (landing.png), its thumbnails made
+ * again and stepped by its step hook.
  */
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -16,6 +18,7 @@ import { type Browser, launchChromium } from './browser';
 import {
   drawsItself,
   openDemo,
+  openLanding,
   restartPaused,
   runsInWorker,
   stepByHand,
@@ -32,6 +35,22 @@ const UPDATE = process.env.UPDATE_VISUALS === '1';
 const STEPS = 60;
 /** the share of pixels that may differ (by more than 8 levels in a channel) from the stored picture */
 const TOLERANCE = 0.005;
+
+/** Compares a screenshot with the stored picture `name`.png, or stores it with UPDATE_VISUALS=1. */
+function compareWithStored(name: string, png: Buffer): void {
+  const stored = resolve(BASELINES, `${name}.png`);
+  if (UPDATE) {
+    writeFileSync(stored, png);
+    return;
+  }
+  if (!existsSync(stored)) {
+    writeFileSync(resolve(ACTUAL, `${name}.png`), png);
+    throw new Error(`no stored picture of ${name} (${stored}): store one with UPDATE_VISUALS=1`);
+  }
+  const share = differingShare(decodePng(readFileSync(stored)), decodePng(png));
+  if (share > TOLERANCE) writeFileSync(resolve(ACTUAL, `${name}.png`), png);
+  expect(share, `share of pixels unlike the stored picture of ${name}`).toBeLessThanOrEqual(TOLERANCE);
+}
 
 /**
  * For a demo whose world steps in a worker: waits until the worker has finished the `steps` steps
@@ -73,24 +92,44 @@ describe('every demo looks as stored', () => {
         const png = await open.page
           .locator('#stage')
           .screenshot({ animations: 'disabled', mask: [open.page.locator('#stage .timings')] });
-        const stored = resolve(BASELINES, `${demo.id}.png`);
-        if (UPDATE) {
-          writeFileSync(stored, png);
-          return;
-        }
-        if (!existsSync(stored)) {
-          writeFileSync(resolve(ACTUAL, `${demo.id}.png`), png);
-          throw new Error(`no stored picture of ${demo.id} (${stored}): store one with UPDATE_VISUALS=1`);
-        }
-        const share = differingShare(decodePng(readFileSync(stored)), decodePng(png));
-        if (share > TOLERANCE) writeFileSync(resolve(ACTUAL, `${demo.id}.png`), png);
-        expect(share, `share of pixels unlike the stored picture of ${demo.id}`).toBeLessThanOrEqual(
-          TOLERANCE,
-        );
+        compareWithStored(demo.id, png);
         expect(open.errors).toEqual([]);
       } finally {
         await open.close();
       }
     });
   }
+});
+
+describe('the landing view looks as stored', () => {
+  it(`landing at step ${STEPS}`, async () => {
+    const open = await openLanding(browser.context, url);
+    try {
+      type LandingWindow = Window & {
+        gallery: {
+          landing: {
+            paused: boolean;
+            thumbnails(): { made: boolean }[];
+            restart(): void;
+            advance(steps: number): void;
+          };
+        };
+      };
+      // once the cards on screen are known (their thumbnails are made), they start again, paused, and are
+      // stepped by the landing view's step hook
+      await open.page.waitForFunction(() =>
+        (window as unknown as LandingWindow).gallery.landing.thumbnails().some((t) => t.made),
+      );
+      await open.page.evaluate((steps) => {
+        const landing = (window as unknown as LandingWindow).gallery.landing;
+        landing.paused = true;
+        landing.restart();
+        landing.advance(steps);
+      }, STEPS);
+      compareWithStored('landing', await open.page.screenshot({ animations: 'disabled' }));
+      expect(open.errors).toEqual([]);
+    } finally {
+      await open.close();
+    }
+  });
 });
