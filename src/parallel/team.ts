@@ -23,8 +23,14 @@ import { startThread, type Thread } from './thread';
  * barrier costs more than the share saves, and the calling thread solves the colour alone.
  */
 const MIN_PER_THREAD = 64;
-/** below this many constraints in a step the team stays idle: one thread is faster */
-const MIN_CONSTRAINTS = 512;
+/**
+ * Below this many constraints in a step the team stays idle. Measured on a 2-core virtual machine
+ * (npm run bench, 2 rounds): two threads made the scenes of 1,300 to 3,000 contacts 1.1 to 1.6 times
+ * slower, and a 9,600-contact pyramid no faster: the barriers between colours cost more than the
+ * halves of them save. Only the 5,050-box pyramid (15,000 contacts) gained: 13.7 -> 11.0 ms a step in
+ * one run, 9.1 -> 9.5 in another.
+ */
+const MIN_CONSTRAINTS = 12_000;
 
 function mayBlock(): boolean {
   try {
