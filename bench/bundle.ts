@@ -31,25 +31,16 @@ export function importBundledFulcrumMatter(): Promise<typeof import('./adapters/
  * `workers`: written once per process and removed when it exits.
  */
 export function bundledSolverWorker(): URL {
-  const outfile = join(tmpdir(), `fulcrum-bench-solver-${process.pid}.mjs`);
-  execFileSync(esbuild, [
-    fileURLToPath(new URL('../src/parallel/solver-worker.ts', import.meta.url)),
-    '--bundle',
-    '--format=esm',
-    '--platform=node',
-    '--target=es2022',
-    `--outfile=${outfile}`,
-    '--log-level=error',
-  ]);
+  const outfile = bundle('../src/parallel/solver-worker.ts', `fulcrum-bench-solver-${process.pid}.mjs`);
   process.once('exit', () => rmSync(outfile, { force: true }));
   return pathToFileURL(outfile);
 }
 
-async function importBundled<T>(relative: string): Promise<T> {
-  const adapterPath = fileURLToPath(new URL(relative, import.meta.url));
-  const outfile = join(tmpdir(), `fulcrum-bench-${process.pid}.mjs`);
+/** Bundles the file at `relative` (to this one) for Node into the temporary file `name`; returns its path. */
+function bundle(relative: string, name: string): string {
+  const outfile = join(tmpdir(), name);
   execFileSync(esbuild, [
-    adapterPath,
+    fileURLToPath(new URL(relative, import.meta.url)),
     '--bundle',
     '--format=esm',
     '--platform=node',
@@ -57,6 +48,11 @@ async function importBundled<T>(relative: string): Promise<T> {
     `--outfile=${outfile}`,
     '--log-level=error',
   ]);
+  return outfile;
+}
+
+async function importBundled<T>(relative: string): Promise<T> {
+  const outfile = bundle(relative, `fulcrum-bench-${process.pid}.mjs`);
   try {
     return await import(pathToFileURL(outfile).href);
   } finally {

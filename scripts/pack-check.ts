@@ -20,11 +20,12 @@ const CORE_BUDGET = 60_000;
  * decomposition, SVG paths and run-time shape editing and issue 24's layers were in; 78.9 kB with
  * issue 22's chains (the one-sided seam rule, its checks and casts) and svgShapes (features the core
  * carries for every user, not growth of the engine's own code); 79.5 kB with issue 21's engine
- * features for fulcrum/matter (Body.setMassData, the frictionMixing option); 80.5 kB with issue 28's
- * multi-core step (the World's `workers` option, workersReady and dispose, the step's team seam: 0.56
- * kB; the team itself is loaded on demand and not counted). Issue 23 holds the 60 kB goal.
+ * features for fulcrum/matter (Body.setMassData, the frictionMixing option); 80.6 kB with issue 28's
+ * multi-core step (the World's `workers` option, workersReady and dispose, the step's team seam and
+ * the contact passes' ranges: 0.64 kB; the team itself is loaded on demand and not counted). Issue 23
+ * holds the 60 kB goal.
  */
-const CORE_CEILING = 80_500;
+const CORE_CEILING = 80_600;
 
 const root = path.resolve(import.meta.dirname, '..');
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'fulcrum-pack-'));

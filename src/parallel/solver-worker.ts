@@ -5,6 +5,7 @@
  * @module
  */
 
+import { serveInWorker, type WorkerSink } from '../core/worker-scope';
 import { ContactConstraints } from '../solver/contact-solver';
 import { CONTACT_PASSES } from '../solver/contact-team';
 import type { BodyStore } from '../store/body-store';
@@ -23,11 +24,7 @@ export interface TeamStart {
 /** @internal The messages a worker gets: its start, then the columns each time they move. */
 export type TeamMessage = { start: TeamStart } | { columns: TeamColumns };
 
-interface Port {
-  postMessage(message: unknown): void;
-}
-
-function serve(port: Port): (message: TeamMessage) => void {
+function serve(port: WorkerSink): (message: TeamMessage) => void {
   let team: TeamThread | null = null;
   let seen = 0;
   // Runs passes until one asks for the event loop (new columns) or the end; a worker spends its life
@@ -76,28 +73,4 @@ function serve(port: Port): (message: TeamMessage) => void {
   };
 }
 
-interface WebWorkerScope extends Port {
-  onmessage: ((event: { data: TeamMessage }) => void) | null;
-}
-
-interface NodeParentPort extends Port {
-  on(event: 'message', listener: (message: TeamMessage) => void): void;
-}
-
-function main(): void {
-  const scope = globalThis as unknown as { WorkerGlobalScope?: unknown } & WebWorkerScope;
-  if (typeof scope.WorkerGlobalScope === 'function' && scope instanceof (scope.WorkerGlobalScope as never)) {
-    const handle = serve(scope);
-    scope.onmessage = (event) => handle(event.data);
-    return;
-  }
-  // Node: a specifier in a variable, so that bundlers for the browser leave it alone
-  const threads = 'node:worker_threads';
-  import(/* @vite-ignore */ threads).then((module: { parentPort: NodeParentPort | null }) => {
-    const port = module.parentPort;
-    if (port === null) throw new Error('fulcrum: solver-worker runs in a worker, not on the main thread');
-    port.on('message', serve(port));
-  });
-}
-
-main();
+serveInWorker('fulcrum: solver-worker', serve);

@@ -5,22 +5,11 @@
  * @module
  */
 
+import { serveInWorker, type WorkerSink } from '../core/worker-scope';
 import { WorldHost } from './host';
-import type { Batch, Reply } from './protocol';
+import type { Batch } from './protocol';
 
-interface MessageSink {
-  postMessage(message: Reply, transfer: Transferable[]): void;
-}
-
-interface WebWorkerScope extends MessageSink {
-  onmessage: ((event: { data: Batch }) => void) | null;
-}
-
-interface NodeParentPort extends MessageSink {
-  on(event: 'message', listener: (batch: Batch) => void): void;
-}
-
-function serve(sink: MessageSink): (batch: Batch) => void {
+function serve(sink: WorkerSink): (batch: Batch) => void {
   const host = new WorldHost();
   return (batch) => {
     const { reply, transfer } = host.handle(batch);
@@ -28,21 +17,4 @@ function serve(sink: MessageSink): (batch: Batch) => void {
   };
 }
 
-function start(): void {
-  const scope = globalThis as unknown as { WorkerGlobalScope?: unknown } & WebWorkerScope;
-  if (typeof scope.WorkerGlobalScope === 'function' && scope instanceof (scope.WorkerGlobalScope as never)) {
-    const handle = serve(scope);
-    scope.onmessage = (event) => handle(event.data);
-    return;
-  }
-  // Node: a specifier in a variable, so that bundlers for the browser leave it alone
-  const threads = 'node:worker_threads';
-  import(/* @vite-ignore */ threads).then((module: { parentPort: NodeParentPort | null }) => {
-    const port = module.parentPort;
-    if (port === null)
-      throw new Error('fulcrum/worker: worker-entry runs in a worker, not on the main thread');
-    port.on('message', serve(port));
-  });
-}
-
-start();
+serveInWorker('fulcrum/worker: worker-entry', serve);

@@ -172,19 +172,23 @@ function prepareContacts(core: WorldCore, h: number): boolean {
   cc.reserve(total);
   cc.count = total;
   const team = core.team;
-  const teamed = team !== null && team.begin(cc, coloring, contacts, bodies, core.shapes);
-  cc.heavyPair = teamed
-    ? team.prepare(core.frictionMin)
-    : prepareContactConstraints(
-        cc,
-        coloring.order,
-        0,
-        total,
-        contacts,
-        bodies,
-        core.shapes,
-        core.frictionMin,
-      );
+  let teamed = false;
+  if (team?.begin(cc, coloring, contacts, bodies, core.shapes)) {
+    teamed = true;
+    cc.heavyPair = team.prepare(core.frictionMin);
+  } else {
+    const shapes = core.shapes;
+    cc.heavyPair = prepareContactConstraints(
+      cc,
+      coloring.order,
+      0,
+      total,
+      contacts,
+      bodies,
+      shapes,
+      core.frictionMin,
+    );
+  }
   cc.supportCount = 0;
   cc.levelExcess = 0;
   if (cc.heavyPair) stiffenLoadedContacts(cc, bodies, core.gravityX, core.gravityY);
