@@ -29,8 +29,8 @@ export interface PointerOptions<W extends AnyWorld = World> {
   /** which bodies may be dragged (default: every dynamic body) */
   filter?: (body: BodyOf<W>) => boolean;
   /**
-   * drag force limit per kilogram of the dragged body, N/kg (default 1000); a worker world's drag
-   * takes the mouse joint's default, 1000 N/kg (its bodies' masses are known in the worker only)
+   * drag force limit per kilogram of the dragged body, N/kg (default 1000), scaled by gravity over
+   * 10 m/s^2; a worker world's body reads its mass as of the last step
    */
   forcePerMass?: number;
   /** stiffness of the drag spring, Hz (default 5) */
@@ -226,27 +226,19 @@ export class Pointer<W extends AnyWorld = World> {
     const world = this.getWorld();
     if (!world || body.world !== world || !body.isValid || stopped(world)) return false;
     this.endDrag();
-    if (isWorkerWorld(world)) {
-      this.joint = world.createJoint({
-        type: 'mouse',
-        body: body as WorkerBody,
-        target: point,
-        hertz: this.hertz,
-        dampingRatio: this.dampingRatio,
-      });
-    } else {
-      const gravity = world.gravity;
-      const g = Math.max(1, Math.sqrt(gravity.x * gravity.x + gravity.y * gravity.y));
-      this.joint = world.createJoint({
-        type: 'mouse',
-        body: body as Body,
-        target: point,
-        // held to the accepted range: a heavy body under strong gravity would ask for more
-        maxForce: Math.min(Limits.FORCE, this.forcePerMass * (body as Body).mass * (g / 10)),
-        hertz: this.hertz,
-        dampingRatio: this.dampingRatio,
-      });
-    }
+    const gravity = world.gravity;
+    const g = Math.max(1, Math.sqrt(gravity.x * gravity.x + gravity.y * gravity.y));
+    // held to the accepted range: a heavy body under strong gravity would ask for more
+    const maxForce = Math.min(Limits.FORCE, this.forcePerMass * body.mass * (g / 10));
+    const def = {
+      type: 'mouse',
+      target: point,
+      maxForce,
+      hertz: this.hertz,
+      dampingRatio: this.dampingRatio,
+    } as const;
+    if (isWorkerWorld(world)) this.joint = world.createJoint({ ...def, body: body as WorkerBody });
+    else this.joint = world.createJoint({ ...def, body: body as Body });
     this.jointWorld = world;
     body.setAwake(true);
     this.body = body;

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { Shape } from '../../src/index';
+import { Shape, stateHash, World } from '../../src/index';
 import { Pointer } from '../../src/render/pointer';
 import type { WorkerWorld } from '../../src/worker/index';
 import { workerScript, workerWorlds } from '../helpers/worker-script';
@@ -13,7 +13,7 @@ import { workerScript, workerWorlds } from '../helpers/worker-script';
 const { open } = workerWorlds();
 
 /** A canvas and camera enough for Pointer, and a way to send it pointer events. */
-function fakeRender(world: WorkerWorld) {
+function fakeRender(world: WorkerWorld | World) {
   const listeners = new Map<string, (e: unknown) => void>();
   const canvas = {
     style: {} as Record<string, string>,
@@ -75,5 +75,34 @@ describe('Pointer with a WorkerWorld whose worker fails', () => {
     expect(pointer.startDrag(box, { x: 10, y: 10 })).toBe(false);
     expect(() => pointer.destroy()).not.toThrow();
     expect(ended).toEqual([box]);
+  });
+});
+
+describe('Pointer with a WorkerWorld', () => {
+  it('drags with the force limit a World gets (forcePerMass x the mass read from the worker): the same bits', async () => {
+    const remote = await open({ gravity: { x: 0, y: -2 } });
+    const local = new World({ gravity: { x: 0, y: -2 } });
+    for (const world of [remote, local]) {
+      world.createBody().createShape(Shape.box(30, 0.5));
+      const box = world.createBody({ type: 'dynamic', position: { x: 10, y: 2 } });
+      box.createShape(Shape.box(1, 1), { density: 3 });
+    }
+    await remote.step(1 / 60);
+    local.step(1 / 60);
+    const drags = [remote, local].map((world) => {
+      const { render, send } = fakeRender(world);
+      const pointer = new Pointer<WorkerWorld | World>({ render: render as never, forcePerMass: 40 });
+      send('pointerdown', 10.5, 2.2);
+      return { pointer, send };
+    });
+    // 12 kg under 2 m/s^2, limited to 40 N/kg x 12 kg x 0.2: the pull to 8 m up is capped
+    expect([...remote.bodies][1].mass).toBe(12);
+    for (let i = 0; i < 40; i++) {
+      for (const drag of drags) drag.send('pointermove', 10.5 + i * 0.05, 2.2 + i * 0.2);
+      await remote.step(1 / 60);
+      local.step(1 / 60);
+    }
+    expect(await remote.stateHash()).toBe(stateHash(local));
+    for (const drag of drags) drag.pointer.destroy();
   });
 });
