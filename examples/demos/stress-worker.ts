@@ -1,7 +1,19 @@
+import solverUrl from '../../src/parallel/solver-worker.ts?worker&url';
 import { WorkerWorld } from '../../src/worker/index';
 import workerUrl from '../../src/worker/worker-entry.ts?worker&url';
 import type { Demo } from '../demo';
 import { buildStressScene, COUNT, stressDemo } from './stress';
+
+/**
+ * Threads that solve the world's contacts in the worker (`workers`): two where the page is isolated
+ * and the machine has four cores or more, where the page, the world's worker and a solver worker each
+ * have a core; `?threads=n` asks for n.
+ */
+function solverThreads(): number {
+  const asked = Number(new URLSearchParams(location.search).get('threads'));
+  if (Number.isInteger(asked) && asked >= 1 && asked <= 8) return asked;
+  return globalThis.crossOriginIsolated === true && navigator.hardwareConcurrency >= 4 ? 2 : 1;
+}
 
 /** How often the readout changes, ms: the figures are averages, and text that flickers is unreadable. */
 const READOUT_MS = 250;
@@ -20,7 +32,12 @@ export const stressWorkerDemo: Demo = {
   view: stressDemo.view,
   maxStepsPerFrame: 2,
   create: async (ctx) => {
-    const world = await WorkerWorld.create({ worker: { url: workerUrl } });
+    const world = await WorkerWorld.create({
+      workers: solverThreads(),
+      // the world in the worker starts its solver workers: an address that does not depend on where it runs
+      workerUrl: new URL(solverUrl, location.href).href,
+      worker: { url: workerUrl },
+    });
     buildStressScene(world);
     // the e2e tests and the curious: frames drawn, the last step drawn (see waitForDrawnStep), timings
     const state = {
@@ -60,7 +77,8 @@ export const stressWorkerDemo: Demo = {
       const frame = frameMsCount > 0 ? frameMsSum / frameMsCount : 0;
       frameMsSum = 0;
       frameMsCount = 0;
-      readout.textContent = `page frame ${frame.toFixed(2)} ms (${ctx.runner.fps.toFixed(0)} fps) · worker step ${ctx.runner.stepMs.toFixed(2)} ms · ${ctx.runner.stepCount} steps`;
+      const threads = world.workers === 1 ? '' : ` on ${world.workers} threads`;
+      readout.textContent = `page frame ${frame.toFixed(2)} ms (${ctx.runner.fps.toFixed(0)} fps) · worker step ${ctx.runner.stepMs.toFixed(2)} ms${threads} · ${ctx.runner.stepCount} steps`;
     }, READOUT_MS);
     ctx.track(() => clearInterval(timer));
     ctx.setStatus(`${COUNT.toLocaleString('en')} dynamic bodies in a worker, ${world.bufferMode} buffers`);

@@ -216,6 +216,49 @@ describe('5,000 bodies in a worker', () => {
   });
 });
 
+describe('5,000 bodies in a worker whose world has a solver worker (?threads=2)', () => {
+  it('starts the second thread in the worker and moves its bodies as a World here moves them (same bits)', async () => {
+    const open = await openDemo(browser.context, `${url}?threads=2`, 'stress-worker');
+    try {
+      const page = open.page;
+      await restartPaused(page);
+      // the world in the worker starts its solver worker while it steps: steps until a step says it
+      // ran on two threads (how many varies; the World here takes as many)
+      let steps = 0;
+      let threads = 1;
+      while (threads !== 2 && steps < 600) {
+        await stepByHand(page, 10);
+        steps += 10;
+        await waitForWorkerSteps(page, steps);
+        threads = await page.evaluate(
+          () =>
+            (window as unknown as { gallery: { instance: { world: { workers: number } } } }).gallery.instance
+              .world.workers,
+        );
+      }
+      expect(threads).toBe(2);
+      await stepByHand(page, 20);
+      steps += 20;
+      await waitForWorkerSteps(page, steps);
+      const after = await readBodies(page);
+      expect(after.step).toBe(steps);
+      const local = new World();
+      buildStressScene(local);
+      for (let i = 0; i < steps; i++) local.step(1 / 60);
+      const localAfter: number[] = [];
+      for (const body of local.bodies) localAfter.push(body.position.x, body.position.y);
+      expect(after.xy).toEqual(localAfter);
+      // the readout says so at its next refresh
+      await page.waitForFunction(() =>
+        /on 2 threads/.test(document.querySelector('[data-role=timings]')?.textContent ?? ''),
+      );
+      expect(open.errors).toEqual([]);
+    } finally {
+      await open.close();
+    }
+  });
+});
+
 describe("the Workers guide's example", () => {
   const ROOT = resolve(__dirname, '../..');
   const DIR = join(GALLERY_DIR, 'docs-examples-worker');
