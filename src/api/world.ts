@@ -84,8 +84,6 @@ export class World {
   readonly handles: WorldHandles;
   /** a new body's rotation as createBody works it out (a # field: no property key, so no snapshot) */
   readonly #rot: Rot = { c: 1, s: 0 };
-  /** the threads solving with this one, once started */
-  #team: SolverTeam | null = null;
   #disposed = false;
   /** see workersReady (a # field: no property key, so no snapshot) */
   readonly #workersReady: Promise<number>;
@@ -146,14 +144,13 @@ export class World {
       team.stop();
       return 1;
     }
-    this.#team = team;
     this.core.team = team;
     return team.threads;
   }
 
   /** threads solving the steps now: `workers` once they have started, else 1 */
   get workers(): number {
-    return this.#team === null ? 1 : this.#team.threads;
+    return this.core.team?.threads ?? 1;
   }
 
   /**
@@ -162,8 +159,7 @@ export class World {
    */
   dispose(): void {
     this.#disposed = true;
-    this.#team?.stop();
-    this.#team = null;
+    this.core.team?.stop();
     this.core.team = null;
   }
 

@@ -72,7 +72,6 @@ function shareColumns(owner: object, names: readonly string[], bound: Record<str
  * block and runs its own share as thread 0.
  */
 export class SolverTeam implements ContactTeam {
-  readonly threads: number;
   private readonly workers: Thread[];
   /** this thread's side: thread 0; its `cc` is a view of the world's constraints' columns */
   private readonly self: TeamThread;
@@ -81,7 +80,6 @@ export class SolverTeam implements ContactTeam {
     order: new Int32Array(0),
     owners: { cc: {}, bodies: {}, contacts: {}, shapes: {} },
   };
-  private readonly colors: number;
   private stopped = false;
   /** whether shareBodies moved a body column the workers have not been given yet */
   private moved = false;
@@ -93,9 +91,11 @@ export class SolverTeam implements ContactTeam {
 
   private constructor(workers: Thread[], self: TeamThread) {
     this.workers = workers;
-    this.threads = self.threads;
     this.self = self;
-    this.colors = self.passes.colors;
+  }
+
+  get threads(): number {
+    return this.self.threads;
   }
 
   /** Starts `threads - 1` workers on `url`; resolves once every one waits for passes. */
@@ -209,10 +209,11 @@ export class SolverTeam implements ContactTeam {
     let phases = 0;
     let alone = false;
     let start = 0;
-    for (let c = 0; c <= this.colors; c++) {
+    const colors = this.self.passes.colors;
+    for (let c = 0; c <= colors; c++) {
       const end = coloring.colorEnd(c);
       if (end === start) continue;
-      const split = c < this.colors && end - start >= this.minPerThread * threads;
+      const split = c < colors && end - start >= this.minPerThread * threads;
       const at = Control.PLAN + phases * stride;
       if (!split && alone) {
         // this thread's phase before goes on to the end of this colour

@@ -18,6 +18,8 @@ import { COLORS, type GraphColoring } from './graph-color';
  * colours. The step calls it in place of warmStartContacts, solveContacts and applyRestitution.
  */
 export interface ContactTeam {
+  /** the threads that solve, the calling one included */
+  readonly threads: number;
   /** Moves the body columns the passes write into shared memory (where they are not yet). */
   shareBodies(bodies: BodyStore): void;
   /**
@@ -38,6 +40,8 @@ export interface ContactTeam {
   restitution(threshold: number): void;
   /** storeImpulses over the threads */
   store(): void;
+  /** Ends the workers; the world steps on one thread from then on. */
+  stop(): void;
 }
 
 /**

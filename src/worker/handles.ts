@@ -47,18 +47,6 @@ export interface WorkerContactData {
   points: ContactPointData[];
 }
 
-/** @internal The settings of a body made by `def` (checked and completed). */
-export function settingsOf(def: ResolvedBodyDef): BodySettings {
-  return {
-    linearDamping: def.linearDamping,
-    angularDamping: def.angularDamping,
-    gravityScale: def.gravityScale,
-    fixedRotation: def.fixedRotation,
-    bullet: def.bullet,
-    allowSleep: def.allowSleep,
-  };
-}
-
 /**
  * A body of a WorkerWorld, made at once on the calling thread while the worker makes the body itself
  * at the next step (or query). Its reads (position, velocities, ...) are synchronous and show the

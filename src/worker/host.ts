@@ -11,7 +11,7 @@ import { BodyFlag, BodyState } from '../store/body-store';
 import { deepFreeze } from './plain';
 import {
   type Batch,
-  type BodySettings,
+  bodySettingsOf,
   type Command,
   EVENT_ORDER,
   type EventRecord,
@@ -35,17 +35,6 @@ function hitOut(hit: CastHit, shapeId: (s: ShapeHandle) => number): Plain {
     point: { x: hit.point.x, y: hit.point.y },
     normal: { x: hit.normal.x, y: hit.normal.y },
     fraction: hit.fraction,
-  };
-}
-
-function bodySettings(body: Body): BodySettings {
-  return {
-    linearDamping: body.linearDamping,
-    angularDamping: body.angularDamping,
-    gravityScale: body.gravityScale,
-    fixedRotation: body.fixedRotation,
-    bullet: body.bullet,
-    allowSleep: body.allowSleep,
   };
 }
 
@@ -273,7 +262,7 @@ export class WorldHost {
       this.#bodies[id] = body;
       this.#generations[id] = 1;
       this.#bodyIds.set(body, id);
-      restored.bodies.push([body.type, bodySettings(body)]);
+      restored.bodies.push([body.type, bodySettingsOf(body)]);
       for (const shape of body.shapes) {
         this.#shapes[restored.shapes.length] = shape;
         this.#shapeIds.set(shape, restored.shapes.length);

@@ -69,6 +69,21 @@ export interface BodySettings {
   allowSleep: boolean;
 }
 
+/**
+ * The settings of `from`, copied: a Body's reads or a checked body definition, which name them alike.
+ * @internal
+ */
+export function bodySettingsOf(from: Readonly<BodySettings>): BodySettings {
+  return {
+    linearDamping: from.linearDamping,
+    angularDamping: from.angularDamping,
+    gravityScale: from.gravityScale,
+    fixedRotation: from.fixedRotation,
+    bullet: from.bullet,
+    allowSleep: from.allowSleep,
+  };
+}
+
 /** A shape's settings that the calling thread reads without asking (ShapeHandle's reads of the same names). */
 export interface ShapeSettings {
   friction: number;

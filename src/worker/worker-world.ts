@@ -15,10 +15,11 @@ import type { AABB } from '../math/aabb';
 import type { Vec2 } from '../math/vec2';
 import type { QueryFilter, QueryTransform } from '../query/index';
 import { decodeEvents, type WorkerWorldEventMap } from './events';
-import { settingsOf, WorkerBody, type WorkerContactData, WorkerJoint, WorkerShape } from './handles';
+import { WorkerBody, type WorkerContactData, WorkerJoint, WorkerShape } from './handles';
 import { deepFreeze, toPlain } from './plain';
 import { type PortListener, startWorker, type WorkerPort } from './platform';
 import {
+  bodySettingsOf,
   type Command,
   EVENT_ORDER,
   type EventKind,
@@ -412,7 +413,7 @@ export class WorkerWorld {
       generation,
       resolved.type,
       resolved,
-      settingsOf(resolved),
+      bodySettingsOf(resolved),
       def.userData,
     );
     this.#bodies[id] = body;

@@ -19,3 +19,14 @@ export function expectRejected(world: World, f: () => unknown, argument: string 
   expect(stateHash(world)).toBe(hash);
   expect(world.bodyCount).toBe(count);
 }
+
+/** The message of the FulcrumError `call` throws (it must throw one): what a World says, to compare. */
+export function fulcrumErrorMessage(call: () => unknown): string {
+  try {
+    call();
+  } catch (e) {
+    expect(e).toBeInstanceOf(FulcrumError);
+    return (e as Error).message;
+  }
+  throw new Error('the call threw nothing');
+}

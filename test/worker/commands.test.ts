@@ -11,6 +11,7 @@ import {
   World,
 } from '../../src/index';
 import { type WorkerBody, type WorkerShape, WorkerWorld } from '../../src/worker/index';
+import { fulcrumErrorMessage } from '../helpers/rejects';
 import { workerScript, workerWorlds } from '../helpers/worker-script';
 
 /*
@@ -314,17 +315,6 @@ describe('WorkerWorld settings commands', () => {
 });
 
 describe('WorkerWorld settings commands with bad values', () => {
-  /** The message World throws for `call`, which must throw. */
-  function worldMessage(call: () => unknown): string {
-    try {
-      call();
-    } catch (e) {
-      expect(e).toBeInstanceOf(FulcrumError);
-      return (e as Error).message;
-    }
-    throw new Error('World took it');
-  }
-
   it('throw World’s FulcrumError at the call, naming the argument and the value, and queue nothing', async () => {
     const local = new World();
     const remote = await open();
@@ -408,7 +398,7 @@ describe('WorkerWorld settings commands with bad values', () => {
       ...[x.puck.shape, x.fallThrough.shape].flatMap(shapeReads),
     ]);
     for (const [named, call] of calls) {
-      const expected = worldMessage(() => call(L));
+      const expected = fulcrumErrorMessage(() => call(L));
       expect(expected).toContain(named);
       if (!/destroyed|unknown option/.test(named)) expect(expected).toMatch(/got /);
       expect(() => call(R)).toThrow(expected);

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { type Body, FulcrumError, Shape, type ShapeHandle, stateHash, World } from '../../src/index';
 import { type WorkerBody, type WorkerShape, WorkerWorld } from '../../src/worker/index';
+import { fulcrumErrorMessage } from '../helpers/rejects';
 import { workerScript, workerWorlds } from '../helpers/worker-script';
 import { type BodyLike, runProgram } from './scene';
 
@@ -258,17 +259,6 @@ describe('WorkerWorld snapshots', () => {
 });
 
 describe('WorkerWorld bad input', () => {
-  /** The message World throws for `call`, which must throw. */
-  function worldMessage(call: () => unknown): string {
-    try {
-      call();
-    } catch (e) {
-      expect(e).toBeInstanceOf(FulcrumError);
-      return (e as Error).message;
-    }
-    throw new Error('World took it');
-  }
-
   it('throws World’s FulcrumError at the call and queues nothing', async () => {
     const local = new World();
     const world = await open();
@@ -351,7 +341,7 @@ describe('WorkerWorld bad input', () => {
       (w) => w.overlapShape(Shape.circle(1), { position: { x: 0, y: 0 }, angle: Number.NaN }),
     ];
     for (const call of calls) {
-      const expected = worldMessage(() => call(local, L));
+      const expected = fulcrumErrorMessage(() => call(local, L));
       expect(() => call(world as unknown as World, R)).toThrow(expected);
       try {
         call(world as unknown as World, R);
@@ -374,17 +364,17 @@ describe('WorkerWorld bad input', () => {
       { units: 2 },
     ];
     for (const def of bad) {
-      const expected = worldMessage(() => new World(def as never));
+      const expected = fulcrumErrorMessage(() => new World(def as never));
       expect(() => WorkerWorld.create({ ...(def as object), worker: { url: workerScript() } })).toThrow(
         expected,
       );
     }
     expect(() => WorkerWorld.create({ worker: { buffers: 'mirrored' as never } })).toThrow(FulcrumError);
     expect(() => WorkerWorld.restore([1, 2] as never)).toThrow(
-      worldMessage(() => World.restore([1, 2] as never)),
+      fulcrumErrorMessage(() => World.restore([1, 2] as never)),
     );
     const garbage = new Uint8Array([1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]);
-    const expected = worldMessage(() => World.restore(garbage));
+    const expected = fulcrumErrorMessage(() => World.restore(garbage));
     const restoring = WorkerWorld.restore(garbage, { url: workerScript() });
     await expect(restoring).rejects.toThrow(expected);
     await expect(restoring).rejects.toBeInstanceOf(FulcrumError);
