@@ -28,7 +28,7 @@ for (let i = 0; i < 120; i++) {
   a.step(1 / 60);
   c.step(1 / 60);
 }
-console.log(bytes.length, stateHash(a) === stateHash(c)); // 75771 (bytes), true
+console.log(bytes.length, stateHash(a) === stateHash(c)); // 75779 (bytes), true
 
 // #endregion example
 

@@ -312,12 +312,31 @@ export class BroadPhase {
     admission: PairAdmission = ADMIT_ALL,
   ): void {
     for (let type = 0; type < 3; type++) this.trees[type].settleMoves();
-    const nearBox = this.#nearBox;
     const start = out.length;
+    const searched = this.searchMoved(existing, filter, out, admission);
+    this.forgetSearched(searched);
+    const kept = this.keepUnsearched(searched);
+    this.moveBuffer.length = kept;
+    this.deferredCount = kept;
+    out.sortPairs(start);
+  }
+
+  /*
+   * updatePairs' three loops are methods of their own that end in a bare return. A world's first step
+   * runs each loop thousands of times in one call, so V8 compiles the running loop on the spot (OSR)
+   * before any code after it has run; code after the loop in the same function would then have no
+   * type feedback and send the compiled loop back to the interpreter in every later step (measured:
+   * the 5,050-box pyramid's updatePairs deoptimized 11 times in its first 10 steps).
+   */
+
+  /** Searches the buffered proxies in order until the budget is spent; returns how many it took. */
+  private searchMoved(existing: PairSet, filter: PairFilter, out: IntList, admission: PairAdmission): number {
+    const nearBox = this.#nearBox;
     const buffer = this.moveBuffer;
     const budget = this.searchBudget;
     let examined = 0;
     let searched = 0;
+    this.examinedCount = 0;
     for (; searched < buffer.length && examined < budget; searched++) {
       const key = buffer.data[searched];
       if (key < 0) continue;
@@ -371,22 +390,34 @@ export class BroadPhase {
         );
       }
       admission.admit(shapeId, out, from);
+      this.examinedCount = examined;
     }
+    return searched;
+  }
+
+  /** Takes the first `searched` entries of the move buffer out of it. */
+  private forgetSearched(searched: number): void {
+    const data = this.moveBuffer.data;
+    const moveIndex = this.moveIndex;
     for (let i = 0; i < searched; i++) {
-      const key = buffer.data[i];
-      if (key >= 0) this.moveIndex[key & 3][key >> 2] = -1;
+      const key = data[i];
+      if (key >= 0) moveIndex[key & 3][key >> 2] = -1;
     }
+  }
+
+  /** Moves the buffer's entries from `searched` on to its front, in order; returns how many there are. */
+  private keepUnsearched(searched: number): number {
+    const data = this.moveBuffer.data;
+    const length = this.moveBuffer.length;
+    const moveIndex = this.moveIndex;
     let kept = 0;
-    for (let i = searched; i < buffer.length; i++) {
-      const key = buffer.data[i];
+    for (let i = searched; i < length; i++) {
+      const key = data[i];
       if (key < 0) continue;
-      buffer.data[kept] = key;
-      this.moveIndex[key & 3][key >> 2] = kept++;
+      data[kept] = key;
+      moveIndex[key & 3][key >> 2] = kept++;
     }
-    buffer.length = kept;
-    this.deferredCount = kept;
-    this.examinedCount = examined;
-    out.sortPairs(start);
+    return kept;
   }
 
   /** Appends the shape ids of proxies overlapping the box, from trees whose bit (1 << type) is in typeMask. */

@@ -66,8 +66,12 @@ export class DynamicTree {
   private moved: Int32Array = new Int32Array(16);
   private movedCount = 0;
   private isMoved: Uint8Array;
-  /** the tree's shape (see refitAll) right after its last rebuild (0: not known yet) */
-  private builtShape = 0;
+  /**
+   * the tree's shape (see refitAll) right after its last rebuild (0: not known yet). It starts as -0,
+   * a double: a whole-number start gives the field V8's small-integer layout, which the first
+   * fractional shape changes, and every compiled function that reads a tree is then thrown away.
+   */
+  private builtShape = -0;
   /**
    * The walks' stacks: working memory, not the tree's state. Private (#) fields are no property keys,
    * so the snapshot, which writes a world's objects key by key, neither writes nor restores them: a
@@ -772,24 +776,9 @@ export class DynamicTree {
 
   /** Builds a subtree over `buildLeaves[lo, hi)` and returns its root. Recursion depth is log2(n). */
   private build(lo: number, hi: number): number {
-    const leaves = this.buildLeaves;
-    if (hi - lo === 1) return leaves[lo];
-    const centre = this.centre;
-    let cMinX = Number.POSITIVE_INFINITY;
-    let cMinY = Number.POSITIVE_INFINITY;
-    let cMaxX = Number.NEGATIVE_INFINITY;
-    let cMaxY = Number.NEGATIVE_INFINITY;
-    for (let i = lo; i < hi; i++) {
-      const o = 2 * leaves[i];
-      const cx = centre[o];
-      const cy = centre[o + 1];
-      cMinX = Math.min(cMinX, cx);
-      cMaxX = Math.max(cMaxX, cx);
-      cMinY = Math.min(cMinY, cy);
-      cMaxY = Math.max(cMaxY, cy);
-    }
+    if (hi - lo === 1) return this.buildLeaves[lo];
     const mid = (lo + hi) >> 1;
-    this.selectByCentre(lo, hi - 1, mid, cMaxX - cMinX >= cMaxY - cMinY ? 0 : 1);
+    this.selectByCentre(lo, hi - 1, mid, this.splitAxis(lo, hi));
     const c1 = this.build(lo, mid);
     const c2 = this.build(mid, hi);
     const node = this.allocate();
@@ -799,6 +788,34 @@ export class DynamicTree {
     this.parent[c2] = node;
     this.refit(node);
     return node;
+  }
+
+  /**
+   * The axis (0: x, 1: y) along which the centres of `buildLeaves[lo, hi)` spread most. The choice is
+   * kept up to date inside the loop so that nothing follows it but the return: a rebuild's first call
+   * spans every leaf, V8 compiles the running loop then (OSR), and code after it with no type feedback
+   * yet sent every later call of the recursion back to the interpreter (2,000 deoptimizations in one
+   * rebuild of the 5,050-box pyramid).
+   */
+  private splitAxis(lo: number, hi: number): number {
+    const leaves = this.buildLeaves;
+    const centre = this.centre;
+    let cMinX = Number.POSITIVE_INFINITY;
+    let cMinY = Number.POSITIVE_INFINITY;
+    let cMaxX = Number.NEGATIVE_INFINITY;
+    let cMaxY = Number.NEGATIVE_INFINITY;
+    let axis = 0;
+    for (let i = lo; i < hi; i++) {
+      const o = 2 * leaves[i];
+      const cx = centre[o];
+      const cy = centre[o + 1];
+      cMinX = Math.min(cMinX, cx);
+      cMaxX = Math.max(cMaxX, cx);
+      cMinY = Math.min(cMinY, cy);
+      cMaxY = Math.max(cMaxY, cy);
+      axis = cMaxX - cMinX >= cMaxY - cMinY ? 0 : 1;
+    }
+    return axis;
   }
 
   /** Quickselect on `buildLeaves[l..r]` so that position k holds the k-th smallest centre on the axis. */

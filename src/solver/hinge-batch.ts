@@ -429,6 +429,9 @@ export class HingeBatch {
    */
   relax(state: Float64Array, last: boolean): void {
     if (this.count === 0) return; // as in warmStart
+    // set before the loop, which must end the function (see listAwakeBodies in world/solve.ts): set
+    // after it, the store deoptimized the loop's compiled code at every last relax of a step
+    if (last) this.carried = true;
     const rows = this.#rows;
     const d = this.data;
     const ids = this.ids;
@@ -488,7 +491,6 @@ export class HingeBatch {
       d[base + HingeField.LY] += py;
       rows.applyImpulse(state, sa, sb, mA, iA, mB, iB, rAx, rAy, rBx, rBy, px, py);
     }
-    if (last) this.carried = true;
   }
 }
 

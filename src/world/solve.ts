@@ -29,12 +29,13 @@ import {
 } from '../solver/contact-solver';
 import { MAX_FINE_FACTOR } from '../solver/fine-islands';
 import type { GraphColoring } from '../solver/graph-color';
+import type { Islands } from '../solver/island';
 import { makeSoftness } from '../solver/softness';
 import type { SolverJoint } from '../solver/solver-joint';
 import { BodyFlag, BodyKind, BodyState, type BodyStore } from '../store/body-store';
 import { ContactFlag, type ContactStore } from '../store/contact-store';
 import { ShapeFlag } from '../store/shape-store';
-import { deferBullet, solveBullets, solveContinuous } from './continuous';
+import { deferBullet, solveContinuous } from './continuous';
 import type { WorkingMemory, WorldCore } from './world-core';
 
 /** @internal Lists the awake non-static bodies by ascending slot. */
@@ -369,7 +370,9 @@ function clampAwakeVelocities(
 
 /**
  * Writes the new transforms of the awake bodies, resets their step deltas, advances their sleep
- * timers, clears forces and moves their proxies.
+ * timers, clears forces and moves their proxies. Ends with its loop (see listAwakeBodies): the
+ * bullets it defers are swept by the step after it (the call here deoptimized every step of the
+ * 5,050-box pyramid's first 60).
  * @internal
  */
 export function finalizeBodies(core: WorldCore, dt: number): void {
@@ -490,7 +493,6 @@ export function finalizeBodies(core: WorldCore, dt: number): void {
       broad.moveProxy(proxyKey[sh], shapes, sh, proxyMotion);
     }
   }
-  if (continuous) solveBullets(core);
 }
 
 /** @internal Groups awake dynamic bodies into islands through touching contacts and puts slow islands to sleep. */
@@ -498,17 +500,26 @@ export function updateSleep(core: WorldCore): void {
   const bodies = core.bodies;
   const islands = core.islands;
   islands.reset(bodies.capacity, core.awake, core.awakeCount);
-  const cc = core.constraints;
-  const kind = bodies.kind;
+  // two loops, two functions that end with them (see listAwakeBodies)
+  uniteTouching(core.constraints, bodies.kind, islands);
+  uniteJointed(core.activeJoints, bodies.kind, islands);
+  islands.sleepIslands(bodies, core.awake, core.awakeCount);
+}
+
+/** Unites the dynamic bodies of every touching contact's constraint. */
+function uniteTouching(cc: ContactConstraints, kind: Uint8Array, islands: Islands): void {
   for (let i = 0; i < cc.count; i++) {
     const a = cc.ids[i * 3];
     const b = cc.ids[i * 3 + 1];
     if (kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) islands.union(a, b);
   }
-  for (const joint of core.activeJoints) {
-    const a = joint.slotA;
-    const b = joint.slotB;
+}
+
+/** Unites the dynamic bodies of every active joint. */
+function uniteJointed(joints: readonly SolverJoint[], kind: Uint8Array, islands: Islands): void {
+  for (let i = 0; i < joints.length; i++) {
+    const a = joints[i].slotA;
+    const b = joints[i].slotB;
     if (a !== b && kind[a] === BodyKind.DYNAMIC && kind[b] === BodyKind.DYNAMIC) islands.union(a, b);
   }
-  islands.sleepIslands(bodies, core.awake, core.awakeCount);
 }

@@ -1,3 +1,4 @@
+import { solveBullets } from './continuous';
 import { collectAwakeBodies, finalizeBodies, solve, updateSleep } from './solve';
 import { createNewContacts, updateContacts } from './update-contacts';
 import type { WorldCore } from './world-core';
@@ -24,6 +25,7 @@ export function stepWorld(core: WorldCore, dt: number): void {
       collectAwakeBodies(core);
       solve(core, dt);
       finalizeBodies(core, dt);
+      if (core.enableContinuous) solveBullets(core);
       if (core.enableSleep) updateSleep(core);
     }
   } finally {

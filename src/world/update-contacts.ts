@@ -21,6 +21,7 @@ export function createNewContacts(core: WorldCore): void {
   pairs.clear();
   limiter.requeue(core.broadPhase);
   core.broadPhase.updatePairs(core.pairs, core, pairs, limiter);
+  core.contacts.reserve(Math.min(pairs.length >> 1, IndexBound.MAX - core.contacts.liveCount));
   const data = pairs.data;
   for (let i = 0, n = pairs.length; i < n; i += 2) {
     if (core.contacts.liveCount >= IndexBound.MAX) break;

@@ -237,7 +237,7 @@ describe('docs examples', () => {
   it('determinism: twin worlds and a restored snapshot give the same hash', async () => {
     const { a, b, bytes, c } = await import('../../docs/examples/determinism');
     const { stateHash } = await import('../../src/index');
-    expect(bytes.length).toBe(75771);
+    expect(bytes.length).toBe(75779);
     expect(stateHash(c)).toBe(stateHash(a));
     expect(b.bodyCount).toBe(a.bodyCount);
   });
