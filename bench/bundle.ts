@@ -37,7 +37,7 @@ export function bundledSolverWorker(): URL {
 }
 
 /** Bundles the file at `relative` (to this one) for Node into the temporary file `name`; returns its path. */
-function bundle(relative: string, name: string): string {
+export function bundle(relative: string, name: string): string {
   const outfile = join(tmpdir(), name);
   execFileSync(esbuild, [
     fileURLToPath(new URL(relative, import.meta.url)),
