@@ -71,7 +71,10 @@ export const cards: Readonly<Record<string, Card>> = {
     summary: 'Jump up through platforms, land on top of them, and ride the moving lift.',
     thumbnail: live,
   },
-  cloth: { summary: 'A sheet of cloth hangs from pins and catches falling balls.', thumbnail: live },
+  cloth: {
+    summary: 'A curtain sways in a breeze and tears where you pull it hard or throw a heavy ball through it.',
+    thumbnail: live,
+  },
   'soft-body': {
     summary: 'Squishy blobs squash when they land and wobble back into shape.',
     thumbnail: live,
@@ -80,7 +83,11 @@ export const cards: Readonly<Record<string, Card>> = {
     summary: 'Rocks circle a sun and two planets, held by their gravity, and crash into each other.',
     thumbnail: live,
   },
-  golf: { summary: 'A mini-golf green: pull back from the ball and let go to putt.', thumbnail: live },
+  golf: {
+    summary:
+      'Mini golf in three holes: pull back from the ball and let go to putt, over a hump, a wall and past a windmill.',
+    thumbnail: live,
+  },
   filtering: {
     summary: 'Coloured shapes choose what they bump into: some fall straight through each other.',
     thumbnail: live,
