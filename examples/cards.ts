@@ -80,7 +80,7 @@ export const cards: Readonly<Record<string, Card>> = {
     thumbnail: live,
   },
   planets: {
-    summary: 'Rocks circle a sun and two planets, held by their gravity, and crash into each other.',
+    summary: 'Drag to throw rocks around a sun: fast enough, they fall into orbit and trace their paths.',
     thumbnail: live,
   },
   golf: {
