@@ -58,7 +58,7 @@ export const cards: Readonly<Record<string, Card>> = {
     thumbnail: live,
   },
   ragdolls: {
-    summary: 'Floppy figures tumble down a flight of stairs. Toss them up again.',
+    summary: 'Floppy figures are pushed off a landing and tumble down a flight of stairs, again and again.',
     thumbnail: live,
   },
   car: { summary: 'Drive a little car on springy wheels over bumps and up a hill.', thumbnail: live },
