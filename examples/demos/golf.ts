@@ -465,7 +465,7 @@ export const golfDemo: Demo = {
           worldText(
             c,
             pixel,
-            { x: b.x + 1.2, y: b.y + 1.3 },
+            { x: b.x + 3.4, y: b.y + 1.3 },
             'drag back from the ball, let go to putt',
             '#1d2b1a',
             14,

@@ -16,6 +16,8 @@ export const RISE = 0.5;
 export const TREAD = 0.8;
 /** the landing's top, and where the stairs begin */
 export const LANDING: Vec2 = { x: -6.5, y: STAIRS * RISE };
+/** the hand's push on a doll on the landing, m/s² */
+const SHOVE = 6;
 /** steps a doll lies still at the bottom before it is carried up again */
 const REST_STEPS = 90;
 
@@ -59,6 +61,8 @@ interface Doll {
   parts: Body[];
   /** steps it has lain still past the stairs */
   rest: number;
+  /** a hand pushes it towards the stairs */
+  pushed: boolean;
 }
 
 export const ragdollsDemo: Demo = {
@@ -66,7 +70,7 @@ export const ragdollsDemo: Demo = {
   title: 'Ragdolls',
   description:
     'Ragdolls tumble down a flight of stairs: capsule limbs on revolute joints with angle limits at the hips, knees, shoulders, elbows and neck (scenes/joint-scenes.ts). Each is pushed off the landing; one at rest at the bottom is carried up and pushed again. Drag a ragdoll by any limb; "Push one" sends the next down.',
-  view: { center: { x: -1.9, y: 3.2 }, halfHeight: 4.4 },
+  view: { center: { x: -2.7, y: 3.3 }, halfHeight: 4.5 },
   flags: { shapes: false, joints: false, sleeping: false },
   create: (ctx) => {
     const bodies: SceneBody[] = [stairs()];
@@ -79,17 +83,31 @@ export const ragdollsDemo: Demo = {
     const dolls: Doll[] = [];
     made.forEach((body, i) => {
       const tag = scene.bodies[i].tag;
-      if (tag === 'pelvis') dolls.push({ parts: [], rest: 0 });
+      if (tag === 'pelvis') dolls.push({ parts: [], rest: 0, pushed: false });
       if (dolls.length > 0 && tag !== 'ground') dolls[dolls.length - 1].parts.push(body);
     });
+    // a push: a shove, then a hand at the back until the doll is over the edge of the landing
     const push = (doll: Doll, speed: number) => {
       for (const part of doll.parts) {
         part.setAwake(true);
         part.setLinearVelocity({ x: speed, y: 0.5 });
       }
+      doll.pushed = true;
     };
+    ctx.track(
+      world.on('preStep', () => {
+        for (const doll of dolls) {
+          if (!doll.pushed) continue;
+          if (doll.parts[0].position.x > LANDING.x + 0.3) {
+            doll.pushed = false;
+            continue;
+          }
+          for (const part of doll.parts) part.applyForce({ x: part.mass * SHOVE, y: 0 });
+        }
+      }),
+    );
     // pushed one after another, the nearest the edge first
-    const pushAt = dolls.map((_, i) => 20 + 45 * (COUNT - 1 - i));
+    const pushAt = dolls.map((_, i) => 15 + 40 * (COUNT - 1 - i));
     let next = 0;
     ctx.button('Push one', () => {
       const doll = dolls[next % dolls.length];
@@ -97,7 +115,7 @@ export const ragdollsDemo: Demo = {
       push(doll, 3.5);
     });
     let steps = 0;
-    /** carries a doll back to the landing, standing as it lies, and lets it drop there */
+    /** carries a doll back to the landing, standing as it lies, and drops it there to be pushed again */
     const carryUp = (doll: Doll, i: number) => {
       const pelvis = doll.parts[0].position;
       const dx = LANDING.x - 2.6 - pelvis.x + 0.3 * (i % 3);
@@ -105,10 +123,10 @@ export const ragdollsDemo: Demo = {
       for (const part of doll.parts) {
         const p = part.position;
         part.setTransform({ x: p.x + dx, y: p.y + dy }, part.angle);
-        part.setLinearVelocity({ x: 2.5, y: 0 });
+        part.setLinearVelocity({ x: 0, y: 0 });
         part.setAngularVelocity(0);
-        part.setAwake(true);
       }
+      push(doll, 2.5);
       doll.rest = 0;
     };
     ctx.track(
