@@ -58,7 +58,7 @@ export const cards: Readonly<Record<string, Card>> = {
     thumbnail: live,
   },
   ragdolls: {
-    summary: 'Floppy figures tumble down a flight of stairs. Toss them up again.',
+    summary: 'Floppy figures are pushed off a landing and tumble down a flight of stairs, again and again.',
     thumbnail: live,
   },
   car: { summary: 'Drive a little car on springy wheels over bumps and up a hill.', thumbnail: live },
@@ -71,16 +71,23 @@ export const cards: Readonly<Record<string, Card>> = {
     summary: 'Jump up through platforms, land on top of them, and ride the moving lift.',
     thumbnail: live,
   },
-  cloth: { summary: 'A sheet of cloth hangs from pins and catches falling balls.', thumbnail: live },
+  cloth: {
+    summary: 'A curtain sways in a breeze and tears where you pull it hard or throw a heavy ball through it.',
+    thumbnail: live,
+  },
   'soft-body': {
     summary: 'Squishy blobs squash when they land and wobble back into shape.',
     thumbnail: live,
   },
   planets: {
-    summary: 'Rocks circle a sun and two planets, held by their gravity, and crash into each other.',
+    summary: 'Drag to throw rocks around a sun: fast enough, they fall into orbit and trace their paths.',
     thumbnail: live,
   },
-  golf: { summary: 'A mini-golf green: pull back from the ball and let go to putt.', thumbnail: live },
+  golf: {
+    summary:
+      'Mini golf in three holes: pull back from the ball and let go to putt, over a hump, a wall and past a windmill.',
+    thumbnail: live,
+  },
   filtering: {
     summary: 'Coloured shapes choose what they bump into: some fall straight through each other.',
     thumbnail: live,

@@ -127,3 +127,30 @@ export function onKeys(keys: string[], handler: (key: string, down: boolean) => 
     window.removeEventListener('keyup', onUp);
   };
 }
+
+/**
+ * The step hook the e2e tests drive a paused demo with: takes steps by hand, as the Step button does
+ * (each one drawn), until `until()` is true or `limit` steps were taken; returns the steps taken.
+ */
+export function stepHook(runner: Runner<AnyWorld>): (limit: number, until?: () => boolean) => number {
+  return (limit, until) => {
+    let n = 0;
+    while (n < limit && !(until?.() ?? false)) {
+      runner.step();
+      n++;
+    }
+    return n;
+  };
+}
+
+/**
+ * Keeps a pointer's events on the canvas until it comes up, wherever it goes: for a 'down' the demo
+ * handles itself (the Pointer captures only the pointers it drags or pans with).
+ */
+export function capturePointer(ctx: DemoContext, event: PointerEvent): void {
+  try {
+    ctx.render.canvas.setPointerCapture(event.pointerId);
+  } catch {
+    // a synthetic event has no active pointer to capture
+  }
+}

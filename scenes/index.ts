@@ -3,7 +3,7 @@ import { cardHouse } from './card-house';
 import { concaveRain } from './concave-rain';
 import { bulletsAtPlanks, highDrop, spinningBar } from './continuous';
 import { freeFall } from './free-fall';
-import { bridge, carOnHills, newtonsCradle, pendulum, ragdolls, slingshot } from './joint-scenes';
+import { bridge, carOnHills, newtonsCradle, pendulum, ragdoll, ragdolls, slingshot } from './joint-scenes';
 import { chain, jointGrid } from './joints';
 import { manyPyramids, pyramid } from './pyramids';
 import { rain } from './rain';
@@ -31,6 +31,7 @@ export {
   newtonsCradle,
   pendulum,
   pyramid,
+  ragdoll,
   ragdolls,
   rain,
   slingshot,

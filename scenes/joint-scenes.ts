@@ -69,8 +69,12 @@ export function bridge({ planks = 20 }: { planks?: number } = {}): Scene {
   };
 }
 
-/** Adds a ragdoll standing with its feet at `feet`: capsule limbs on limited revolute joints. */
-function ragdoll(bodies: SceneBody[], joints: SceneJoint[], feet: V): void {
+/**
+ * Adds a ragdoll standing with its feet at `feet`: capsule limbs on limited revolute joints. Its bodies
+ * are tagged, in this order: pelvis, torso, head, then thigh, shin, arm and forearm of the left side
+ * and of the right.
+ */
+export function ragdoll(bodies: SceneBody[], joints: SceneJoint[], feet: V): void {
   const add = (x: number, y: number, p1: V, p2: V, radius: number, tag: string): number => {
     bodies.push({
       type: 'dynamic',
