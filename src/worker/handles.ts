@@ -7,7 +7,7 @@ import {
   type MassData,
   type ResolvedBodyDef,
 } from '../api/body';
-import { checkGeometryFor, checkShapes, type Filter, type ShapeDef } from '../api/shape';
+import { checkGeometryFor, checkShapes, type Filter, type RayCastResult, type ShapeDef } from '../api/shape';
 import { checkBoolean, FulcrumError, fail } from '../core/errors';
 import {
   checkAngle,
@@ -20,12 +20,16 @@ import {
   checkVector,
   Limits,
 } from '../core/limits';
+import { computeShapeBounds } from '../geometry/bounds';
+import { Pack } from '../geometry/packed';
+import { rayCastGeometry, testPoint } from '../geometry/raycast';
 import { localScale, scaleGeometry } from '../geometry/scale-geometry';
-import { type Chain, type Concave, type Geometry, ShapeKind } from '../geometry/types';
+import { type Chain, type Concave, type Geometry, makeRayHit, ShapeKind } from '../geometry/types';
 import type { JointType } from '../joints/registry';
+import { type AABB, makeBounds } from '../math/aabb';
 import { blendTransform } from '../math/blend';
 import { makeRot, rotAngle } from '../math/rot';
-import type { Transform, Vec2 } from '../math/vec2';
+import { makeTransform, type Transform, type Vec2 } from '../math/vec2';
 import { checkKindChange } from '../world/world-edits';
 import { toPlain } from './plain';
 import {
@@ -565,6 +569,36 @@ export class WorkerShape {
   get type(): Geometry['type'] {
     this.check();
     return this.current.type;
+  }
+
+  /** Tight world AABB at the body's pose after the last step (see ShapeHandle.getAABB). */
+  getAABB(): AABB {
+    this.check();
+    const xf = this.body.readPose(makeTransform());
+    const b = computeShapeBounds(this.current, xf, makeBounds(), new Float64Array(Pack.STRIDE));
+    return { lowerBound: { x: b.minX, y: b.minY }, upperBound: { x: b.maxX, y: b.maxY } };
+  }
+
+  /** Whether the shape holds `point`, at the body's pose after the last step. */
+  testPoint(point: Vec2): boolean {
+    this.check();
+    const p = checkCoordinates('point', point);
+    return testPoint(this.current, this.body.readPose(makeTransform()), p.x, p.y);
+  }
+
+  /** Ray from `origin` along `translation` against the shape at the body's pose after the last step; null when it misses. */
+  rayCast(origin: Vec2, translation: Vec2): RayCastResult | null {
+    this.check();
+    const o = checkCoordinates('origin', origin);
+    const t = checkCoordinates('translation', translation);
+    const hit = makeRayHit();
+    if (!rayCastGeometry(this.current, this.body.readPose(makeTransform()), o.x, o.y, t.x, t.y, hit))
+      return null;
+    return {
+      point: { x: hit.pointX, y: hit.pointY },
+      normal: { x: hit.normalX, y: hit.normalY },
+      fraction: hit.fraction,
+    };
   }
 
   /**

@@ -198,6 +198,79 @@ describe('WorkerBody reads', () => {
   });
 });
 
+/** getAABB, testPoint at a few points and rayCast of a shape, as numbers (1/0 for hit or not). */
+function shapeReads(shape: ShapeHandle | WorkerShape): number[] {
+  const box = shape.getAABB();
+  const c = { x: (box.lowerBound.x + box.upperBound.x) / 2, y: (box.lowerBound.y + box.upperBound.y) / 2 };
+  const out = [box.lowerBound.x, box.lowerBound.y, box.upperBound.x, box.upperBound.y];
+  for (const p of [c, { x: c.x + 0.45, y: c.y + 0.1 }, { x: c.x - 0.7, y: c.y }])
+    out.push(shape.testPoint(p) ? 1 : 0);
+  for (const [o, t] of [
+    [
+      { x: c.x - 5, y: c.y + 0.05 },
+      { x: 10, y: 0 },
+    ],
+    [
+      { x: c.x + 0.1, y: c.y + 5 },
+      { x: 0, y: -10 },
+    ],
+    [
+      { x: c.x - 5, y: c.y + 5 },
+      { x: 1, y: 0 },
+    ],
+  ]) {
+    const hit = shape.rayCast(o, t);
+    out.push(
+      hit === null ? 0 : 1,
+      hit?.point.x ?? 0,
+      hit?.point.y ?? 0,
+      hit?.normal.x ?? 0,
+      hit?.normal.y ?? 0,
+      hit?.fraction ?? 0,
+    );
+  }
+  return out;
+}
+
+describe('WorkerShape reads', () => {
+  it('getAABB, testPoint and rayCast are World’s after each step, bit for bit', async () => {
+    const local = new World();
+    const remote = await open();
+    const L = shapes(local);
+    const R = shapes(remote as unknown as World);
+    const all = (s: Shapes) => [s.crate, s.ball, s.plank].map((x) => x.shape);
+    for (let i = 0; i < 45; i++) {
+      if (i === 20) for (const s of [L, R]) s.plank.body.scale(1.4);
+      local.step(1 / 60);
+      await remote.step(1 / 60);
+      if (i % 11 !== 0) continue;
+      const expected = all(L).flatMap((x) => shapeReads(x));
+      expect(
+        sameBits(
+          all(R).flatMap((x) => shapeReads(x)),
+          expected,
+        ),
+        `step ${i}`,
+      ).toBe(true);
+    }
+    // the rays and points did hit: reads of an empty answer would prove little
+    expect(all(R).map((x) => x.testPoint(x.body.worldCenter))).toEqual([true, true, true]);
+    for (const x of all(R)) {
+      const c = x.body.worldCenter;
+      const hit = x.rayCast({ x: c.x, y: c.y + 5 }, { x: 0, y: -10 });
+      expect(hit?.normal.y).toBeGreaterThan(0);
+    }
+    // bad input: World's message, at the call
+    for (const call of [
+      (x: ShapeHandle) => x.testPoint({ x: Number.NaN, y: 0 }),
+      (x: ShapeHandle) => x.rayCast({ x: 0, y: 0 }, null as never),
+    ]) {
+      const message = fulcrumErrorMessage(() => call(all(L)[0] as ShapeHandle));
+      expect(() => call(all(R)[0] as ShapeHandle)).toThrow(message);
+    }
+  });
+});
+
 /** A crate, a ball and a plank on the ground, for the geometry commands. */
 function shapes(w: World) {
   const ground = w.createBody();
