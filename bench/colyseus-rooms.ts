@@ -17,6 +17,10 @@
  * dropped" (the pool catches up 3). With --clients each room has one client (this process, over a
  * WebSocket) and Colyseus encodes and sends its patches at 30 Hz; without, it only tracks the changes.
  *
+ * Each round first runs 8 rooms on one process and then on one pool worker, for the mean cost of a
+ * room step side by side: the counts that fit hang on the p99 of a frame's work, which every pause of
+ * a busy machine reaches; the means hold better.
+ *
  *   npm run bench:colyseus -- [--rounds n=2] [--quick] [--clients] [--no-pool]
  */
 import { type ChildProcess, fork } from 'node:child_process';
@@ -46,6 +50,8 @@ const BUDGET = 1000 / 60;
 const WARM = quick ? 60 : 120;
 const SETTLE_MS = 300;
 const MEASURE_MS = quick ? 1500 : 2000;
+/** rooms on one core for the side-by-side cost of a room step */
+const SAME_ROOMS = 8;
 /** the first count tried on one process (later rounds start from the last answer) */
 const FIRST_GUESS = 20;
 
@@ -145,6 +151,8 @@ type Fit<T> = { rooms: number; trials: (T & { rooms: number })[] };
 
 interface RoundResult {
   round: number;
+  /** SAME_ROOMS rooms on one core, Colyseus then the pool: the cost of a room step, side by side */
+  same: { colyseus: ColyseusTrial; pool?: PoolTrial };
   colyseus1: Fit<ColyseusTrial>;
   colyseus2: Fit<ColyseusTrial>;
   pool1?: Fit<PoolTrial>;
@@ -172,6 +180,10 @@ async function main(): Promise<void> {
     await Promise.all(hosts.map((h) => h.ready));
     for (let round = 1; round <= rounds; round++) {
       const last = results.at(-1);
+      const same = {
+        colyseus: await colyseusTrial(hosts.slice(0, 1), SAME_ROOMS),
+        pool: withPool ? await poolTrial(pools[0], SAME_ROOMS) : undefined,
+      };
       const colyseus1 = await largestThatFits(
         (n) => colyseusTrial(hosts.slice(0, 1), n),
         last?.colyseus1.rooms ?? FIRST_GUESS,
@@ -180,7 +192,7 @@ async function main(): Promise<void> {
         (n) => colyseusTrial(hosts, n),
         last?.colyseus2.rooms ?? 1.8 * Math.max(1, colyseus1.rooms),
       );
-      const result: RoundResult = { round, colyseus1, colyseus2 };
+      const result: RoundResult = { round, same, colyseus1, colyseus2 };
       if (withPool) {
         result.pool1 = await largestThatFits(
           (n) => poolTrial(pools[0], n),
@@ -206,10 +218,10 @@ async function main(): Promise<void> {
   }
 
   const atFit = results.flatMap((r) => [best(r.colyseus1), best(r.colyseus2)]).filter((t) => t !== undefined);
-  const windows = atFit.flatMap((t) => t.windows);
-  const allWindows = results
-    .flatMap((r) => [...r.colyseus1.trials, ...r.colyseus2.trials])
-    .flatMap((t) => t.windows.filter((w) => w.roomTick.count > 0));
+  // a process without rooms (1 room over 2) has no figures
+  const windows = atFit.flatMap((t) => t.windows).filter((w) => w.roomTick.count > 0);
+  const sameTick = results.map((r) => r.same.colyseus.windows[0].roomTick.mean);
+  const samePool = results.map((r) => r.same.pool?.step[0].mean ?? 0);
   const rows: [string, string][] = [
     [
       'Colyseus: rooms at 60 Hz, 1 process (1 core)',
@@ -225,11 +237,18 @@ async function main(): Promise<void> {
         0,
       ),
     ],
-    // means over every trial: less at the mercy of the machine's pauses than the fitted counts
-    ['Colyseus, all trials: world step mean, ms', range(allWindows.map((w) => w.worldStep.mean))],
+    // the mean cost of a room step is less at the mercy of the machine's pauses than the fitted counts
     [
-      'Colyseus, all trials: room tick mean (world step and schema), ms',
-      range(allWindows.map((w) => w.roomTick.mean)),
+      `${SAME_ROOMS} rooms, 1 process: Colyseus world step mean, ms`,
+      range(results.map((r) => r.same.colyseus.windows[0].worldStep.mean)),
+    ],
+    [`${SAME_ROOMS} rooms, 1 process: Colyseus room tick mean (world step and schema), ms`, range(sameTick)],
+    [
+      `${SAME_ROOMS} rooms, 1 process: 1/60 s over the room tick mean`,
+      range(
+        sameTick.map((t) => BUDGET / t),
+        0,
+      ),
     ],
     ['Colyseus at the fitted counts: world step p50 / p95 / p99, ms', pcts(windows.map((w) => w.worldStep))],
     ['Colyseus at the fitted counts: room tick p50 / p95 / p99, ms', pcts(windows.map((w) => w.roomTick))],
@@ -240,6 +259,18 @@ async function main(): Promise<void> {
   if (withPool) {
     const poolFit = results.flatMap((r) => [best(r.pool1), best(r.pool2)]).filter((t) => t !== undefined);
     rows.push(
+      [`${SAME_ROOMS} rooms, 1 worker: RoomPool room step mean, ms`, range(samePool)],
+      [
+        `${SAME_ROOMS} rooms, 1 worker: 1/60 s over the room step mean`,
+        range(
+          samePool.map((t) => BUDGET / t),
+          0,
+        ),
+      ],
+      [
+        `${SAME_ROOMS} rooms: Colyseus room tick over RoomPool room step, same round`,
+        range(sameTick.map((t, i) => t / samePool[i])),
+      ],
       [
         'RoomPool: rooms at 60 Hz, 1 worker',
         range(
@@ -255,15 +286,13 @@ async function main(): Promise<void> {
         ),
       ],
       [
-        'RoomPool, all trials: room step mean, ms',
-        range(
-          results
-            .flatMap((r) => [...(r.pool1?.trials ?? []), ...(r.pool2?.trials ?? [])])
-            .flatMap((t) => t.step.filter((p) => p.count > 0).map((p) => p.mean)),
-        ),
+        'RoomPool at the fitted counts: room step p50 / p95 / p99, ms',
+        pcts(poolFit.flatMap((t) => t.step).filter((p) => p.count > 0)),
       ],
-      ['RoomPool at the fitted counts: room step p50 / p95 / p99, ms', pcts(poolFit.flatMap((t) => t.step))],
-      ['RoomPool at the fitted counts: worker tick p99, ms', range(poolFit.flatMap((t) => t.tickP99))],
+      [
+        'RoomPool at the fitted counts: worker tick p99, ms',
+        range(poolFit.flatMap((t) => t.tickP99.filter((_, w) => t.step[w].count > 0))),
+      ],
     );
   }
   const width = Math.max(...rows.map(([k]) => k.length));
