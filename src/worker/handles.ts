@@ -535,6 +535,8 @@ export class WorkerShape {
   userData: unknown;
   /** @internal the geometry, until setGeometry or a scale of the body replaces it */
   current: Geometry;
+  /** @internal the batch that carries the last setGeometry (see WorkerWorld.queueSeq), or -1 */
+  geometrySeq = -1;
   /** @internal */
   destroyed = false;
   readonly #settings: ShapeSettings;
@@ -608,8 +610,10 @@ export class WorkerShape {
   setGeometry(geometry: Geometry): void {
     this.check();
     checkGeometryFor(BODY_KINDS[this.body.kind], geometry);
-    this.body.world.queue(['shapeGeometry', this.id, geometry as unknown as Plain]);
+    const world = this.body.world;
+    world.queue(['shapeGeometry', this.id, geometry as unknown as Plain]);
     this.current = geometry;
+    this.geometrySeq = world.queueSeq;
   }
 
   #set<K extends ShapeSetting>(setting: K, value: ShapeSettings[K]): void {

@@ -362,6 +362,11 @@ export class WorkerWorld {
     if (this.#failure !== null) throw this.#failure;
   }
 
+  /** @internal the seq of the batch that the commands queued now will go with */
+  get queueSeq(): number {
+    return this.#nextSeq;
+  }
+
   /** @internal queues a checked command for the next request */
   queue(command: Command): void {
     this.#usable();
@@ -777,7 +782,7 @@ export class WorkerWorld {
     if (more) this.#arm();
     // before settle, so that what the request's promise or a step's events run reads them
     if (reply.joints !== undefined) this.#adoptJointReads(reply.joints);
-    if (reply.geometries !== undefined) this.#adoptGeometries(reply.geometries);
+    if (reply.geometries !== undefined) this.#adoptGeometries(reply.geometries, reply.seq);
     waiting.settle(reply);
     // after settle, which makes a restored world's joints; before any code awaiting the reply runs
     if (reply.anchors !== undefined) this.#adoptAnchors(reply.anchors);
@@ -799,11 +804,15 @@ export class WorkerWorld {
     }
   }
 
-  /** The geometries of scaled bodies' shapes, as the worker made them. */
-  #adoptGeometries(geometries: [number, Plain][]): void {
+  /**
+   * The geometries of scaled bodies' shapes, as the worker made them after batch `seq`; a shape given
+   * a geometry by a later batch's setGeometry keeps that one.
+   */
+  #adoptGeometries(geometries: [number, Plain][], seq: number): void {
     for (const [id, geometry] of geometries) {
       const shape = this.#shapes[id];
-      if (shape !== undefined) shape.current = deepFreeze(geometry) as unknown as Geometry;
+      if (shape !== undefined && shape.geometrySeq <= seq)
+        shape.current = deepFreeze(geometry) as unknown as Geometry;
     }
   }
 

@@ -342,6 +342,38 @@ describe('WorkerBody.scale and WorkerShape.setGeometry', () => {
     }
   });
 
+  it('a geometry given after a scale, while the scale is on its way, is the one that stays', async () => {
+    const remote = await open();
+    const R = shapes(remote as unknown as World);
+    const shape = R.crate.shape as WorkerShape;
+    R.crate.body.scale(2);
+    const scaled = remote.step(1 / 60);
+    const triangle = Shape.polygon([
+      { x: -1, y: -0.4 },
+      { x: 1, y: -0.4 },
+      { x: 0, y: 0.9 },
+    ]);
+    shape.setGeometry(triangle);
+    await scaled;
+    expect(shape.geometry).toBe(triangle);
+    await remote.step(1 / 60);
+    expect(shape.geometry).toBe(triangle);
+    // and a scale after it reads the worker's scaled triangle once its step is back: World's
+    R.crate.body.scale(0.5);
+    await remote.step(1 / 60);
+    const local = new World();
+    const L = shapes(local);
+    L.crate.body.scale(2);
+    local.step(1 / 60);
+    (L.crate.shape as ShapeHandle).setGeometry(triangle);
+    local.step(1 / 60);
+    L.crate.body.scale(0.5);
+    local.step(1 / 60);
+    expect(shape.geometry).not.toBe(triangle);
+    expect(shape.geometry).toEqual(L.crate.shape.geometry);
+    expect(await remote.stateHash()).toBe(stateHash(local));
+  });
+
   it('refuse bad input with World’s FulcrumError at the call, and queue nothing', async () => {
     const local = new World();
     const remote = await open();
