@@ -16,6 +16,8 @@
  * then drops the rest): the counterpart of the pool's "every worker's tick p99 under 16.7 ms, no tick
  * dropped" (the pool catches up 3). With --clients each room has one client (this process, over a
  * WebSocket) and Colyseus encodes and sends its patches at 30 Hz; without, it only tracks the changes.
+ * The patches are encoded on Colyseus's patch timer, outside the fixed-step callbacks: the work per
+ * frame leaves them out, and they count only as they make rooms fall behind (and in "event loop busy").
  *
  * Each round first runs 8 rooms on one process and then on one pool worker, for the mean cost of a
  * room step side by side: the counts that fit hang on the p99 of a frame's work, which every pause of
