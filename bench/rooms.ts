@@ -14,10 +14,12 @@
 import { writeFileSync } from 'node:fs';
 import { availableParallelism, cpus } from 'node:os';
 import { setTimeout as sleep } from 'node:timers/promises';
+import { pathToFileURL } from 'node:url';
 import { Room, type RoomSpec } from '../examples/server/room';
 import { RoomPool } from '../examples/server/room-pool';
 import { type Percentiles, Samples } from '../examples/server/samples';
 import { roomScene } from '../examples/server/scene';
+import { largestThatFits } from './fit-search';
 
 const args = process.argv.slice(2);
 const quick = args.includes('--quick');
@@ -75,7 +77,7 @@ async function pooled(pool: RoomPool): Promise<number> {
   return ms;
 }
 
-interface Trial {
+export interface PoolTrial {
   rooms: number;
   keeps60Hz: boolean;
   /** per worker */
@@ -85,7 +87,7 @@ interface Trial {
 }
 
 /** `count` rooms on the workers' 60 Hz clocks */
-async function trial(pool: RoomPool, count: number): Promise<Trial> {
+export async function trial(pool: RoomPool, count: number): Promise<PoolTrial> {
   const rooms = await fill(pool, count);
   await pool.start();
   await sleep(SETTLE_MS);
@@ -105,32 +107,13 @@ async function trial(pool: RoomPool, count: number): Promise<Trial> {
   };
 }
 
-/**
- * The largest count of rooms that keeps 60 Hz: first `guess` rooms, then up by a fifth while they fit,
- * then bisection between the largest count seen to fit and the smallest seen not to.
- */
-async function roomsThatFit(pool: RoomPool, guess: number): Promise<{ rooms: number; trials: Trial[] }> {
-  const trials: Trial[] = [];
-  let fits = 0;
-  let fails = Number.POSITIVE_INFINITY;
-  let count = Math.max(1, Math.round(guess));
-  for (;;) {
-    const t = await trial(pool, count);
-    trials.push(t);
-    if (t.keeps60Hz) fits = count;
-    else fails = count;
-    if (fails - fits <= 1) return { rooms: fits, trials };
-    count = fails === Number.POSITIVE_INFINITY ? Math.ceil(fits * 1.2) + 1 : Math.floor((fits + fails) / 2);
-  }
-}
-
 interface RoundResult {
   round: number;
   single: OneThread;
   pool1: number;
   pool2: number;
-  fit1: { rooms: number; trials: Trial[] };
-  fit2: { rooms: number; trials: Trial[] };
+  fit1: { rooms: number; trials: PoolTrial[] };
+  fit2: { rooms: number; trials: PoolTrial[] };
 }
 
 const f2 = (x: number) => x.toFixed(2);
@@ -152,8 +135,11 @@ async function main(): Promise<void> {
       // a room step takes longer among many rooms than among 8, and the p99 of a tick catches every
       // pause: start at half the one-thread estimate, or at the last round's answer
       const guess1 = results.at(-1)?.fit1.rooms ?? BUDGET / single.msPerRoomStep / 2;
-      const fit1 = await roomsThatFit(pools[0], guess1);
-      const fit2 = await roomsThatFit(pools[1], results.at(-1)?.fit2.rooms ?? 1.8 * Math.max(1, fit1.rooms));
+      const fit1 = await largestThatFits((n) => trial(pools[0], n), guess1);
+      const fit2 = await largestThatFits(
+        (n) => trial(pools[1], n),
+        results.at(-1)?.fit2.rooms ?? 1.8 * Math.max(1, fit1.rooms),
+      );
       const best2 = fit2.trials.find((t) => t.rooms === fit2.rooms && t.keeps60Hz);
       results.push({ round, single, pool1, pool2, fit1, fit2 });
       console.log(
@@ -166,7 +152,7 @@ async function main(): Promise<void> {
     await Promise.all(pools.map((pool) => pool.close()));
   }
 
-  const best = (fit: { rooms: number; trials: Trial[] }) =>
+  const best = (fit: { rooms: number; trials: PoolTrial[] }) =>
     fit.trials.find((t) => t.rooms === fit.rooms && t.keeps60Hz);
   const rows: [string, string][] = [
     [
@@ -226,4 +212,5 @@ async function main(): Promise<void> {
   console.log(`\nwrote bench/results/rooms.json in ${((performance.now() - began) / 1000).toFixed(0)} s`);
 }
 
-await main();
+// run as a script (bench/colyseus-rooms.ts imports the pool's trial)
+if (import.meta.url === pathToFileURL(process.argv[1]).href) await main();

@@ -1,7 +1,7 @@
 /**
  * Game rooms spread over a pool of worker_threads workers, each room a Fulcrum World stepping at 60 Hz
- * in its worker. The pool places rooms, forwards commands, moves rooms between workers, gathers step
- * statistics, and reports a worker that fails: every promise waiting on it is rejected and a 'failure'
+ * in its worker. The pool places rooms, forwards commands, moves rooms between workers (and out of the
+ * pool and into it, to travel to another process or machine), gathers step statistics, and reports a worker that fails: every promise waiting on it is rejected and a 'failure'
  * event names the rooms it took with it.
  */
 import { EventEmitter } from 'node:events';
@@ -123,18 +123,31 @@ export class RoomPool extends EventEmitter<{ failure: [WorkerFailure] }> {
    * Makes a room in `worker`, or else in the worker with fewest rooms (the lowest index on a tie).
    * It steps from the worker's next tick on.
    */
-  async createRoom(room: string, spec: RoomSpec, worker?: number): Promise<void> {
-    if (this.#placement.has(room)) throw new Error(`room ${JSON.stringify(room)} exists already`);
-    const target = worker ?? this.#leastLoaded();
-    this.#checkWorker(target);
-    this.#placement.set(room, target);
-    this.#lost.delete(room);
-    try {
-      await this.#workers[target].request({ kind: 'create', room, spec });
-    } catch (error) {
-      if (this.#placement.get(room) === target) this.#placement.delete(room);
-      throw error;
-    }
+  createRoom(room: string, spec: RoomSpec, worker?: number): Promise<void> {
+    return this.#place(room, worker, { kind: 'create', room, spec });
+  }
+
+  /**
+   * Brings in a room packed elsewhere (by `detachRoom` of this or another pool, or `Room.pack` in
+   * another process or machine) to `worker`, or else to the worker with fewest rooms. It goes on from
+   * where it was packed, with its step count and the commands it had not applied yet, from the
+   * worker's next tick on. The bytes are copied: the caller keeps `packed`.
+   */
+  attachRoom(room: string, packed: PackedRoom, worker?: number): Promise<void> {
+    return this.#place(room, worker, { kind: 'attach', room, packed });
+  }
+
+  /**
+   * Takes a room out of the pool at a step boundary of its worker and answers it packed (snapshot,
+   * steps, commands not yet applied), to go on elsewhere: `attachRoom` here or in another pool,
+   * `Room.unpack` in another process. Requests to the room made after this call are refused.
+   */
+  detachRoom(room: string): Promise<PackedRoom> {
+    return this.#after(room, async () => {
+      const reply = this.#workers[this.workerOf(room)].request({ kind: 'detach', room });
+      this.#placement.delete(room);
+      return (await reply) as PackedRoom;
+    });
   }
 
   /** Ends a room (after any move of it in progress). */
@@ -226,6 +239,21 @@ export class RoomPool extends EventEmitter<{ failure: [WorkerFailure] }> {
     const moving = this.#moving.get(room);
     // not moving: send now, so that requests keep the order they were made in
     return moving === undefined ? then() : moving.then(then);
+  }
+
+  /** a room made or brought into `worker` (default the least loaded) by `request` */
+  async #place(room: string, worker: number | undefined, request: Request): Promise<void> {
+    if (this.#placement.has(room)) throw new Error(`room ${JSON.stringify(room)} exists already`);
+    const target = worker ?? this.#leastLoaded();
+    this.#checkWorker(target);
+    this.#placement.set(room, target);
+    this.#lost.delete(room);
+    try {
+      await this.#workers[target].request(request);
+    } catch (error) {
+      if (this.#placement.get(room) === target) this.#placement.delete(room);
+      throw error;
+    }
   }
 
   #leastLoaded(): number {

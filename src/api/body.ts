@@ -135,7 +135,8 @@ export function resolveBodyDef(def: BodyDef): ResolvedBodyDef {
 }
 
 /** A scale factor: finite, not 0, at most Limits.COORDINATE in size (a negative one mirrors). */
-function checkScaleFactor(argument: string, value: unknown, given: unknown): number {
+/** @internal Body.scale's check of one factor (`given`: the argument as passed); fulcrum/worker's too. */
+export function checkScaleFactor(argument: string, value: unknown, given: unknown): number {
   if (
     typeof value !== 'number' ||
     !Number.isFinite(value) ||

@@ -3,10 +3,11 @@ import {
   BODY_TYPES,
   type BodyType,
   type ContactPointData,
+  checkScaleFactor,
   type MassData,
   type ResolvedBodyDef,
 } from '../api/body';
-import { checkShapes, type Filter, type ShapeDef } from '../api/shape';
+import { checkGeometryFor, checkShapes, type Filter, type RayCastResult, type ShapeDef } from '../api/shape';
 import { checkBoolean, FulcrumError, fail } from '../core/errors';
 import {
   checkAngle,
@@ -19,17 +20,23 @@ import {
   checkVector,
   Limits,
 } from '../core/limits';
-import { type Chain, type Concave, type Geometry, ShapeKind } from '../geometry/types';
+import { computeShapeBounds } from '../geometry/bounds';
+import { Pack } from '../geometry/packed';
+import { rayCastGeometry, testPoint } from '../geometry/raycast';
+import { localScale, scaleGeometry } from '../geometry/scale-geometry';
+import { type Chain, type Concave, type Geometry, makeRayHit, ShapeKind } from '../geometry/types';
 import type { JointType } from '../joints/registry';
+import { type AABB, makeBounds } from '../math/aabb';
 import { blendTransform } from '../math/blend';
 import { makeRot, rotAngle } from '../math/rot';
-import type { Transform, Vec2 } from '../math/vec2';
+import { makeTransform, type Transform, type Vec2 } from '../math/vec2';
 import { checkKindChange } from '../world/world-edits';
 import { toPlain } from './plain';
 import {
   type BodyCommand,
   type BodySettings,
   type JointCommand,
+  JointRead,
   type Plain,
   type PlainDef,
   Row,
@@ -160,6 +167,72 @@ export class WorkerBody {
 
   get isAwake(): boolean {
     return this.#read(Row.AWAKE) !== 0;
+  }
+
+  /**
+   * Writes the body's state after the last step into `out` from `offset`, as Body.readState: the
+   * centre of mass x, y; the rotation's cosine and sine; the linear velocity x, y; the angular
+   * velocity; 1 if awake, else 0.
+   */
+  readState(out: Float64Array, offset = 0): void {
+    this.check();
+    out[offset] = this.#read(Row.CX);
+    out[offset + 1] = this.#read(Row.CY);
+    out[offset + 2] = this.#read(Row.QC);
+    out[offset + 3] = this.#read(Row.QS);
+    out[offset + 4] = this.#read(Row.VX);
+    out[offset + 5] = this.#read(Row.VY);
+    out[offset + 6] = this.#read(Row.W);
+    out[offset + 7] = this.#read(Row.AWAKE);
+  }
+
+  /** A point of the body's frame in world coordinates, at the pose after the last step. */
+  getWorldPoint(localPoint: Vec2): Vec2 {
+    this.check();
+    const p = checkCoordinates('localPoint', localPoint);
+    const c = this.#read(Row.QC);
+    const s = this.#read(Row.QS);
+    return { x: c * p.x - s * p.y + this.#read(Row.PX), y: s * p.x + c * p.y + this.#read(Row.PY) };
+  }
+
+  /** A world point in the body's frame, at the pose after the last step. */
+  getLocalPoint(worldPoint: Vec2): Vec2 {
+    this.check();
+    const p = checkCoordinates('worldPoint', worldPoint);
+    const c = this.#read(Row.QC);
+    const s = this.#read(Row.QS);
+    const dx = p.x - this.#read(Row.PX);
+    const dy = p.y - this.#read(Row.PY);
+    return { x: c * dx + s * dy, y: -s * dx + c * dy };
+  }
+
+  /** A vector of the body's frame in world axes, at the rotation after the last step. */
+  getWorldVector(localVector: Vec2): Vec2 {
+    this.check();
+    const v = checkCoordinates('localVector', localVector);
+    const c = this.#read(Row.QC);
+    const s = this.#read(Row.QS);
+    return { x: c * v.x - s * v.y, y: s * v.x + c * v.y };
+  }
+
+  /** A world vector in the body's axes, at the rotation after the last step. */
+  getLocalVector(worldVector: Vec2): Vec2 {
+    this.check();
+    const v = checkCoordinates('worldVector', worldVector);
+    const c = this.#read(Row.QC);
+    const s = this.#read(Row.QS);
+    return { x: c * v.x + s * v.y, y: -s * v.x + c * v.y };
+  }
+
+  /** Velocity of a world point attached to the body, after the last step. */
+  getLinearVelocityAt(worldPoint: Vec2): Vec2 {
+    this.check();
+    const p = checkCoordinates('worldPoint', worldPoint);
+    const w = this.#read(Row.W);
+    return {
+      x: this.#read(Row.VX) - w * (p.y - this.#read(Row.CY)),
+      y: this.#read(Row.VY) + w * (p.x - this.#read(Row.CX)),
+    };
   }
 
   /** mass in kg, after the last step (see Body.mass) */
@@ -343,6 +416,29 @@ export class WorkerBody {
     this.#command('setMassData', [this.world.checkMassData(data)]);
   }
 
+  /**
+   * Scales the body's shapes by `factor` about the world `point` (default: the centre of mass), as
+   * Body.scale does, at the next step. It is checked here as Body.scale checks it, at the pose after
+   * the last step; the worker checks it again at its pose then (commands queued before it may have
+   * moved the body), and a scale it refuses rejects that request's promise and changes nothing. The
+   * shapes' `geometry` reads the scaled geometries from the reply to that request on, the mass data
+   * after the next step.
+   */
+  scale(factor: number | Vec2, point?: Vec2): void {
+    this.check();
+    const sx = checkScaleFactor('factor', typeof factor === 'number' ? factor : factor?.x, factor);
+    const sy = typeof factor === 'number' ? sx : checkScaleFactor('factor', factor.y, factor);
+    const p = point === undefined ? this.worldCenter : checkCoordinates('point', point);
+    checkCoordinates('factor', {
+      x: p.x + sx * (this.#read(Row.PX) - p.x),
+      y: p.y + sy * (this.#read(Row.PY) - p.y),
+    });
+    const m = localScale(sx, sy, this.#read(Row.QC), this.#read(Row.QS));
+    for (const shape of this.shapeList) scaleGeometry(shape.geometry, m, 'factor');
+    const f = typeof factor === 'number' ? factor : { x: sx, y: sy };
+    this.#command('scale', point === undefined ? [f] : [f, { x: p.x, y: p.y }]);
+  }
+
   /** Goes back to the mass data the body's shapes give (see Body.resetMassData). */
   resetMassData(): void {
     this.check();
@@ -436,9 +532,11 @@ export class WorkerShape {
   readonly body: WorkerBody;
   /** @internal */
   readonly id: number;
-  /** the shape's geometry in its body's frame (a concave shape's piece, a chain's segment) */
-  readonly geometry: Geometry;
   userData: unknown;
+  /** @internal the geometry, until setGeometry or a scale of the body replaces it */
+  current: Geometry;
+  /** @internal the batch that carries the last setGeometry (see WorkerWorld.queueSeq), or -1 */
+  geometrySeq = -1;
   /** @internal */
   destroyed = false;
   readonly #settings: ShapeSettings;
@@ -447,7 +545,7 @@ export class WorkerShape {
   constructor(body: WorkerBody, id: number, geometry: Geometry, settings: ShapeSettings, userData: unknown) {
     this.body = body;
     this.id = id;
-    this.geometry = geometry;
+    this.current = geometry;
     this.#settings = settings;
     this.userData = userData;
   }
@@ -461,9 +559,61 @@ export class WorkerShape {
     return !this.destroyed;
   }
 
+  /**
+   * The shape's geometry in its body's frame (a concave shape's piece, a chain's segment): the one
+   * `setGeometry` gave it at once; after `body.scale`, the worker's from the reply to the request that
+   * carried the scale.
+   */
+  get geometry(): Geometry {
+    return this.current;
+  }
+
   get type(): Geometry['type'] {
     this.check();
-    return this.geometry.type;
+    return this.current.type;
+  }
+
+  /** Tight world AABB at the body's pose after the last step (see ShapeHandle.getAABB). */
+  getAABB(): AABB {
+    this.check();
+    const xf = this.body.readPose(makeTransform());
+    const b = computeShapeBounds(this.current, xf, makeBounds(), new Float64Array(Pack.STRIDE));
+    return { lowerBound: { x: b.minX, y: b.minY }, upperBound: { x: b.maxX, y: b.maxY } };
+  }
+
+  /** Whether the shape holds `point`, at the body's pose after the last step. */
+  testPoint(point: Vec2): boolean {
+    this.check();
+    const p = checkCoordinates('point', point);
+    return testPoint(this.current, this.body.readPose(makeTransform()), p.x, p.y);
+  }
+
+  /** Ray from `origin` along `translation` against the shape at the body's pose after the last step; null when it misses. */
+  rayCast(origin: Vec2, translation: Vec2): RayCastResult | null {
+    this.check();
+    const o = checkCoordinates('origin', origin);
+    const t = checkCoordinates('translation', translation);
+    const hit = makeRayHit();
+    if (!rayCastGeometry(this.current, this.body.readPose(makeTransform()), o.x, o.y, t.x, t.y, hit))
+      return null;
+    return {
+      point: { x: hit.pointX, y: hit.pointY },
+      normal: { x: hit.normalX, y: hit.normalY },
+      fraction: hit.fraction,
+    };
+  }
+
+  /**
+   * Gives the shape another geometry (see ShapeHandle.setGeometry), checked here as World checks it;
+   * `geometry` reads it at once, the body's mass data after the next step.
+   */
+  setGeometry(geometry: Geometry): void {
+    this.check();
+    checkGeometryFor(BODY_KINDS[this.body.kind], geometry);
+    const world = this.body.world;
+    world.queue(['shapeGeometry', this.id, geometry as unknown as Plain]);
+    this.current = geometry;
+    this.geometrySeq = world.queueSeq;
   }
 
   #set<K extends ShapeSetting>(setting: K, value: ShapeSettings[K]): void {
@@ -559,6 +709,10 @@ export class WorkerJoint {
   localAnchors: Float64Array | null = null;
   /** a mouse joint's target as the commands given so far leave it (null for other joints) */
   #target: Vec2 | null;
+  /** the reads of the last step (see JointRead), or of when the joint was made; null until a reply has them */
+  #reads: Float64Array | null = null;
+  /** a distance joint's length or a revolute joint's motor speed, once a setter has given it */
+  #setting: number | null = null;
 
   /** @internal */
   constructor(
@@ -585,6 +739,83 @@ export class WorkerJoint {
     return this.#target === null ? null : { x: this.#target.x, y: this.#target.y };
   }
 
+  /** @internal takes the joint's row of a reply's `joints` (see JointRead) */
+  adoptReads(rows: readonly number[], at: number): void {
+    this.#reads ??= new Float64Array(JointRead.STRIDE);
+    for (let i = 0; i < JointRead.STRIDE; i++) this.#reads[i] = rows[at + i];
+  }
+
+  /** A read of the last step; `name` names it in the error thrown before the worker has sent any. */
+  #read(name: string, column: JointRead): number {
+    this.check();
+    if (this.#reads === null) {
+      throw new FulcrumError(
+        `${name}: the joint's reads come from the worker with the reply to the request that made it; await a step first`,
+      );
+    }
+    return this.#reads[column];
+  }
+
+  /** Throws unless the joint is of one of `types`, as a call of a method its type lacks would. */
+  #only(name: string, types: readonly JointType[]): void {
+    if (!types.includes(this.type)) throw new FulcrumError(`${name}: a ${this.type} joint has no ${name}`);
+  }
+
+  /** Anchor on body A in world coordinates, after the last step (see Joint.anchorA). */
+  get anchorA(): Vec2 {
+    return { x: this.#read('anchorA', JointRead.AX), y: this.#read('anchorA', JointRead.AY) };
+  }
+
+  /** Anchor on body B in world coordinates, after the last step. */
+  get anchorB(): Vec2 {
+    return { x: this.#read('anchorB', JointRead.BX), y: this.#read('anchorB', JointRead.BY) };
+  }
+
+  /** Force (N) the joint applied to body B over the last substep of the last step. */
+  getReactionForce(): Vec2 {
+    return {
+      x: this.#read('getReactionForce', JointRead.FX),
+      y: this.#read('getReactionForce', JointRead.FY),
+    };
+  }
+
+  /** Torque (N·m) the joint applied to body B over the last substep of the last step. */
+  getReactionTorque(): number {
+    return this.#read('getReactionTorque', JointRead.TORQUE);
+  }
+
+  /** revolute: the angle of B relative to A minus the reference angle, after the last step */
+  get angle(): number {
+    this.#only('angle', ['revolute']);
+    return this.#read('angle', JointRead.MEASURE);
+  }
+
+  /** prismatic, wheel: the translation of B's anchor along the axis from A's, after the last step */
+  get translation(): number {
+    this.#only('translation', ['prismatic', 'wheel']);
+    return this.#read('translation', JointRead.MEASURE);
+  }
+
+  /** distance: the distance between the anchors after the last step */
+  get currentLength(): number {
+    this.#only('currentLength', ['distance']);
+    return this.#read('currentLength', JointRead.MEASURE);
+  }
+
+  /** distance: the rest length, as the commands given so far leave it */
+  get length(): number {
+    this.#only('length', ['distance']);
+    this.check();
+    return this.#setting ?? this.#read('length', JointRead.SETTING);
+  }
+
+  /** revolute: the motor speed, as the commands given so far leave it */
+  get motorSpeed(): number {
+    this.#only('motorSpeed', ['revolute']);
+    this.check();
+    return this.#setting ?? this.#read('motorSpeed', JointRead.SETTING);
+  }
+
   /** Checks a call of `method` as the joint of this type checks it, and queues it. */
   #call(method: JointCommand, args: unknown[]): void {
     this.world.checkJointCall(this.type, this.destroyed, method, args);
@@ -609,6 +840,7 @@ export class WorkerJoint {
   /** revolute, prismatic, wheel: rad/s, or m/s for a prismatic joint */
   setMotorSpeed(speed: number): void {
     this.#call('setMotorSpeed', [speed]);
+    if (this.type === 'revolute') this.#setting = speed;
   }
 
   /** revolute, wheel */
@@ -644,6 +876,7 @@ export class WorkerJoint {
   /** distance */
   setLength(length: number): void {
     this.#call('setLength', [length]);
+    this.#setting = length;
   }
 
   /** distance */

@@ -3,9 +3,12 @@ import type { ShapeHandle } from '../api/shape';
 import { stateHash } from '../api/state-hash';
 import { World, type WorldDef } from '../api/world';
 import { FulcrumError } from '../core/errors';
+import type { DistanceJoint } from '../joints/distance-joint';
 import type { Joint } from '../joints/joint';
 import type { MouseJoint } from '../joints/mouse-joint';
 import type { JointDef } from '../joints/registry';
+import type { RevoluteJoint } from '../joints/revolute-joint';
+import type { SliderJoint } from '../joints/slider-joint';
 import type { CastHit } from '../query/index';
 import { BodyFlag, BodyState } from '../store/body-store';
 import { deepFreeze } from './plain';
@@ -15,6 +18,7 @@ import {
   type Command,
   EVENT_ORDER,
   type EventRecord,
+  JointRead,
   type Plain,
   type Reply,
   type Request,
@@ -65,6 +69,8 @@ export class WorldHost {
   readonly #jointIds = new WeakMap<Joint, number>();
   /** the joints the current batch made, with their ids, whose anchors go into its reply */
   #madeJoints: number[] = [];
+  /** the bodies the current batch scaled, whose shapes' geometries go into its reply */
+  #scaledBodies: number[] = [];
 
   /**
    * Applies a batch's commands in order, then answers its request. A command the World refuses with a
@@ -93,8 +99,60 @@ export class WorldHost {
       refused(e);
     }
     if (error !== undefined) reply.error = error;
+    if (batch.request.kind === 'step') reply.joints = this.#jointReads(this.#joints.keys());
+    else if (this.#madeJoints.length > 0) reply.joints = this.#jointReads(this.#madeJoints);
     if (this.#madeJoints.length > 0) reply.anchors = this.#anchors();
+    if (this.#scaledBodies.length > 0) reply.geometries = this.#scaledGeometries();
     return { reply, transfer };
+  }
+
+  /** The reads of the joints of `ids` that are alive (see JointRead). */
+  #jointReads(ids: Iterable<number>): number[] {
+    const out: number[] = [];
+    for (const id of ids) {
+      const joint = this.#joints[id];
+      if (joint === undefined) continue;
+      const force = joint.getReactionForce();
+      const a = joint.anchorA;
+      const b = joint.anchorB;
+      let measure = 0;
+      let setting = 0;
+      if (joint.type === 'revolute') {
+        measure = (joint as RevoluteJoint).angle;
+        setting = (joint as RevoluteJoint).motorSpeed;
+      } else if (joint.type === 'prismatic' || joint.type === 'wheel') {
+        measure = (joint as SliderJoint).translation;
+      } else if (joint.type === 'distance') {
+        measure = (joint as DistanceJoint).currentLength;
+        setting = (joint as DistanceJoint).length;
+      }
+      const at = out.length;
+      out.length += JointRead.STRIDE;
+      out[at + JointRead.ID] = id;
+      out[at + JointRead.FX] = force.x;
+      out[at + JointRead.FY] = force.y;
+      out[at + JointRead.TORQUE] = joint.getReactionTorque();
+      out[at + JointRead.AX] = a.x;
+      out[at + JointRead.AY] = a.y;
+      out[at + JointRead.BX] = b.x;
+      out[at + JointRead.BY] = b.y;
+      out[at + JointRead.MEASURE] = measure;
+      out[at + JointRead.SETTING] = setting;
+    }
+    return out;
+  }
+
+  /** The geometries of the shapes of the bodies scaled since the last reply (see Reply.geometries). */
+  #scaledGeometries(): [number, Plain][] {
+    const out: [number, Plain][] = [];
+    for (const id of new Set(this.#scaledBodies)) {
+      const body = this.#bodies[id];
+      if (body === undefined) continue;
+      for (const shape of body.shapes)
+        out.push([this.#shapeIds.get(shape)!, shape.geometry as unknown as Plain]);
+    }
+    this.#scaledBodies = [];
+    return out;
   }
 
   /** The anchors of the joints made since the last reply (see Reply.anchors). */
@@ -222,6 +280,14 @@ export class WorldHost {
         const [, id, method, args] = command;
         const body = this.#body(id);
         (body[method] as (...a: unknown[]) => void).apply(body, args);
+        if (method === 'scale') this.#scaledBodies.push(id);
+        return;
+      }
+      case 'shapeGeometry': {
+        const shape = this.#shapes[command[1]];
+        if (shape === undefined) throw new FulcrumError('shape has been destroyed');
+        // a structured clone of what Shape.* made: frozen again, it passes the same checks
+        shape.setGeometry(deepFreeze(command[2]) as never);
         return;
       }
       case 'shape': {

@@ -1,3 +1,4 @@
+import { startThread, type WebWorkerLike } from '../core/start-thread';
 import type { Batch, Reply } from './protocol';
 
 /**
@@ -17,80 +18,6 @@ export interface PortListener {
   failure(error: Error): void;
 }
 
-interface NodeWorker {
-  postMessage(message: unknown, transfer: Transferable[]): void;
-  on(event: 'message', listener: (reply: Reply) => void): void;
-  on(event: 'error' | 'messageerror', listener: (error: Error) => void): void;
-  on(event: 'exit', listener: (code: number) => void): void;
-  ref(): void;
-  unref(): void;
-  terminate(): Promise<number>;
-}
-
-interface WebWorker {
-  postMessage(message: unknown, transfer: Transferable[]): void;
-  onmessage: ((event: { data: Reply }) => void) | null;
-  onerror: ((event: { message?: string; error?: unknown; preventDefault?(): void }) => void) | null;
-  onmessageerror: (() => void) | null;
-  terminate(): void;
-}
-
-function isNode(): boolean {
-  const g = globalThis as { process?: { versions?: { node?: string } } };
-  return typeof g.process?.versions?.node === 'string';
-}
-
-/** Node's worker_threads Worker running the script at `url`. */
-async function startNode(url: URL | string | undefined, listener: PortListener): Promise<WorkerPort> {
-  // a specifier in a variable, so that bundlers for the browser leave it alone
-  const threads = 'node:worker_threads';
-  const { Worker } = (await import(/* @vite-ignore */ threads)) as {
-    Worker: new (url: URL | string) => NodeWorker;
-  };
-  const worker = new Worker(url ?? new URL('./worker-entry.js', import.meta.url));
-  let ending = false;
-  worker.on('message', (reply) => listener.reply(reply));
-  worker.on('error', (error) => listener.failure(error));
-  worker.on('messageerror', (error) => listener.failure(error));
-  worker.on('exit', (code) => {
-    if (!ending) listener.failure(new Error(`the worker exited with code ${code}`));
-  });
-  worker.unref();
-  return {
-    post: (batch, transfer) => worker.postMessage(batch, transfer),
-    hold: (waiting) => (waiting ? worker.ref() : worker.unref()),
-    terminate: () => {
-      ending = true;
-      void worker.terminate();
-    },
-  };
-}
-
-/** A module Web Worker running the script at `url`. */
-function startWeb(url: URL | string | undefined, listener: PortListener): WorkerPort {
-  const WorkerClass = (
-    globalThis as unknown as { Worker: new (url: URL | string, options: object) => WebWorker }
-  ).Worker;
-  // written out in full when no url is given, so that bundlers (Vite, webpack, Parcel) find the script
-  const worker =
-    url === undefined
-      ? new WorkerClass(new URL('./worker-entry.js', import.meta.url), { type: 'module' })
-      : new WorkerClass(url, { type: 'module' });
-  worker.onmessage = (event) => listener.reply(event.data);
-  worker.onerror = (event) => {
-    event.preventDefault?.();
-    const error =
-      event.error instanceof Error ? event.error : new Error(event.message ?? 'the worker failed');
-    listener.failure(error);
-  };
-  worker.onmessageerror = () => listener.failure(new Error('a reply from the worker could not be read'));
-  return {
-    post: (batch, transfer) => worker.postMessage(batch, transfer),
-    hold: () => {},
-    terminate: () => worker.terminate(),
-  };
-}
-
 /**
  * Starts the worker that runs a WorkerWorld's World: a worker_threads Worker on Node, a module Web
  * Worker elsewhere (browsers, Deno, Bun). `url` is its script, by default the package's
@@ -100,8 +27,21 @@ export async function startWorker(
   url: URL | string | undefined,
   listener: PortListener,
 ): Promise<WorkerPort> {
-  if (isNode() && typeof (globalThis as { Worker?: unknown }).Worker !== 'function') {
-    return startNode(url, listener);
-  }
-  return startWeb(url, listener);
+  const thread = await startThread(
+    url ?? {
+      url: new URL('./worker-entry.js', import.meta.url),
+      // `new Worker` written out in full (minifiers keep the global's name), so that bundlers (Vite,
+      // webpack, Parcel) find the script and bundle it as a worker
+      web: () =>
+        new Worker(new URL('./worker-entry.js', import.meta.url), {
+          type: 'module',
+        }) as unknown as WebWorkerLike,
+    },
+    { message: (data) => listener.reply(data as Reply), failure: (error) => listener.failure(error) },
+  );
+  return {
+    post: (batch, transfer) => thread.post(batch, transfer),
+    hold: (waiting) => thread.hold(waiting),
+    terminate: () => thread.end(),
+  };
 }

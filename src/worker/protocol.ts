@@ -30,6 +30,7 @@ export const BODY_COMMANDS = Object.freeze([
   'setAllowSleep',
   'setMassData',
   'resetMassData',
+  'scale',
 ] as const);
 
 export type BodyCommand = (typeof BODY_COMMANDS)[number];
@@ -116,6 +117,8 @@ export type Command =
   | ['body', number, BodyCommand, Plain[]]
   /** shape id, the setting, its checked value */
   | ['shape', number, ShapeSetting, Plain]
+  /** shape id, its new geometry (checked): ShapeHandle.setGeometry */
+  | ['shapeGeometry', number, Plain]
   /** joint id, a method of the joint's type, its checked arguments */
   | ['joint', number, JointCommand, Plain[]]
   | ['gravity', { x: number; y: number }];
@@ -219,6 +222,13 @@ export interface Reply {
    * bodies' frames (A x, y, B x, y), stride JOINT_ANCHORS_STRIDE, for drawing
    */
   anchors?: number[];
+  /**
+   * the joints' reads (see JointRead): after a step every joint's, else those of the joints the batch
+   * made (or a restored world's)
+   */
+  joints?: number[];
+  /** the new geometries of the shapes of the bodies the batch scaled: shape id, geometry */
+  geometries?: [number, Plain][];
   /** a step's duration in the worker, milliseconds (output only) */
   stepMs?: number;
   /** the threads that solved the step (the world's `workers`, once started) */
@@ -226,6 +236,26 @@ export interface Reply {
 }
 
 export const JOINT_ANCHORS_STRIDE = 5;
+
+/**
+ * A joint's reads in a reply's `joints`, a row per joint: its id; the reaction force and torque of
+ * the last substep; the anchors in world coordinates; MEASURE, a revolute joint's angle, a prismatic or
+ * wheel joint's translation, a distance joint's current length (else 0); SETTING, a revolute joint's
+ * motor speed, a distance joint's length (else 0).
+ */
+export enum JointRead {
+  ID = 0,
+  FX = 1,
+  FY = 2,
+  TORQUE = 3,
+  AX = 4,
+  AY = 5,
+  BX = 6,
+  BY = 7,
+  MEASURE = 8,
+  SETTING = 9,
+  STRIDE = 10,
+}
 
 /**
  * The state buffer: a Float64Array with one row per body id, written by the worker after each step.

@@ -25,6 +25,7 @@ import {
   type EventKind,
   JOINT_ANCHORS_STRIDE,
   type JointCommand,
+  JointRead,
   type Plain,
   type PlainDef,
   type QueryName,
@@ -163,8 +164,9 @@ function fullBodyDef(d: ResolvedBodyDef): PlainDef {
  *   commands go to the worker with the next request (a step, a query, a snapshot, a hash), which
  *   applies them in the order given before it answers: the same calls give the same bits as on World.
  * - `step(dt)` resolves once the worker has stepped. The state it left (every body's pose, velocities,
- *   centre of mass, awake flag, and the pose before the step) then reads synchronously from the
- *   handles, and the step's events have been delivered to the `on` handlers.
+ *   centre of mass, awake flag, mass data and the pose before the step; every joint's reads) then
+ *   reads synchronously from the handles, and the step's events have been delivered to the `on`
+ *   handlers.
  * - Bad input throws the FulcrumError World would throw, at the call, and queues nothing: the calling
  *   thread checks everything with the engine's own checks. What only the worker can tell (bytes that
  *   are no snapshot, a command the worker's World refuses) rejects the request's promise with a
@@ -358,6 +360,11 @@ export class WorkerWorld {
 
   #usable(): void {
     if (this.#failure !== null) throw this.#failure;
+  }
+
+  /** @internal the seq of the batch that the commands queued now will go with */
+  get queueSeq(): number {
+    return this.#nextSeq;
   }
 
   /** @internal queues a checked command for the next request */
@@ -773,6 +780,9 @@ export class WorkerWorld {
     // an answer shows the worker alive: what waits next gets the whole time from now
     this.#disarm();
     if (more) this.#arm();
+    // before settle, so that what the request's promise or a step's events run reads them
+    if (reply.joints !== undefined) this.#adoptJointReads(reply.joints);
+    if (reply.geometries !== undefined) this.#adoptGeometries(reply.geometries, reply.seq);
     waiting.settle(reply);
     // after settle, which makes a restored world's joints; before any code awaiting the reply runs
     if (reply.anchors !== undefined) this.#adoptAnchors(reply.anchors);
@@ -784,6 +794,25 @@ export class WorkerWorld {
       const joint = this.#joints[anchors[i]];
       if (joint === undefined) continue;
       joint.localAnchors = Float64Array.of(anchors[i + 1], anchors[i + 2], anchors[i + 3], anchors[i + 4]);
+    }
+  }
+
+  /** The joints' reads (see JointRead) of the last step, or of joints just made. */
+  #adoptJointReads(rows: number[]): void {
+    for (let i = 0; i < rows.length; i += JointRead.STRIDE) {
+      this.#joints[rows[i + JointRead.ID]]?.adoptReads(rows, i);
+    }
+  }
+
+  /**
+   * The geometries of scaled bodies' shapes, as the worker made them after batch `seq`; a shape given
+   * a geometry by a later batch's setGeometry keeps that one.
+   */
+  #adoptGeometries(geometries: [number, Plain][], seq: number): void {
+    for (const [id, geometry] of geometries) {
+      const shape = this.#shapes[id];
+      if (shape !== undefined && shape.geometrySeq <= seq)
+        shape.current = deepFreeze(geometry) as unknown as Geometry;
     }
   }
 
@@ -861,5 +890,6 @@ export class WorkerWorld {
       if (bodyB !== bodyA) bodyB.jointList.push(joint);
       this.#jointCount++;
     }
+    if (reply.joints !== undefined) this.#adoptJointReads(reply.joints);
   }
 }

@@ -43,6 +43,21 @@ describe('docs examples', () => {
     expect(result.y).toBeLessThan(2.5);
   });
 
+  it('worker joints: a hinge in a worker holds its bob’s weight, and four times it once the bob is scaled by 2', async () => {
+    const { hangInAWorker } = await import('../../docs/examples/worker-joints');
+    const { workerScript } = await import('../helpers/worker-script');
+    const { before, after } = await hangInAWorker({ url: workerScript() });
+    // at rest under the pivot, the hinge pulls the bob up with its weight
+    expect(before.mass).toBeCloseTo(4 * Math.PI * 0.25 ** 2, 12);
+    expect(before.force.y).toBeCloseTo(before.mass * G, 6);
+    expect(before.force.x).toBeCloseTo(0, 9);
+    expect(before.angle).toBeCloseTo(0, 9);
+    // twice the radius, four times the area and the mass
+    expect(after.geometry).toMatchObject({ type: 'circle', radius: 0.5 });
+    expect(after.mass).toBeCloseTo(4 * before.mass, 12);
+    expect(after.force.y).toBeCloseTo(after.mass * G, 6);
+  });
+
   it('workers: a pyramid stepped by two threads is bit for bit the one stepped by one', async () => {
     const { pyramidOnTwoThreads } = await import('../../docs/examples/workers-step');
     const { workerScript } = await import('../helpers/worker-script');

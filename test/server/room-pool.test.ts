@@ -1,10 +1,10 @@
 import { afterEach, describe, expect, it } from 'vitest';
-import { ROOM_DT, type RoomCommand, type RoomSpec } from '../../examples/server/room';
+import { ROOM_DT, type RoomCommand } from '../../examples/server/room';
 import { RoomPool, type WorkerFailure } from '../../examples/server/room-pool';
 import { roomScene } from '../../examples/server/scene';
-import { buildFulcrumWorld, createSceneBody } from '../../scenes/build-fulcrum';
-import type { SceneBody } from '../../scenes/types';
-import { type Body, FulcrumError, stateHash, World } from '../../src/index';
+import { buildFulcrumWorld } from '../../scenes/build-fulcrum';
+import { FulcrumError, stateHash, World } from '../../src/index';
+import { plainRoomHash, roomProgram, roomSpec } from '../helpers/room-program';
 import { workerScript } from '../helpers/worker-script';
 
 /*
@@ -25,55 +25,17 @@ afterEach(async () => {
   await Promise.all(pools.splice(0).map((pool) => pool.close()));
 });
 
-const spec: RoomSpec = { scene: roomScene(7), settings: { enableSleep: false } };
-
-const spawned: SceneBody = {
-  type: 'dynamic',
-  position: { x: 3, y: 20 },
-  linearVelocity: { x: -2, y: 0 },
-  shapes: [{ kind: 'circle', radius: 0.7, density: 3 }],
-};
-
-/** commands by the step boundary they come before; body 200 is the spawned one */
-const program = new Map<number, RoomCommand[]>([
-  [10, [{ kind: 'impulse', body: 60, impulse: { x: 8, y: 30 } }]],
-  [20, [{ kind: 'spawn', body: spawned }]],
-  [30, [{ kind: 'velocity', body: 200, velocity: { x: 4, y: -1 } }]],
-  [
-    45,
-    [
-      { kind: 'impulse', body: 120, impulse: { x: -5, y: 2 } },
-      { kind: 'spawn', body: { ...spawned, position: { x: -3, y: 18 } } },
-    ],
-  ],
-  [80, [{ kind: 'impulse', body: 201, impulse: { x: 0, y: 40 } }]],
-]);
 const STEPS = 150;
-
-/** The room's program on a plain World on this thread, through Fulcrum's own calls. */
-function plainHash(steps: number): number {
-  const { world } = buildFulcrumWorld(spec.scene, { enableSleep: false });
-  const bodies: Body[] = [...world.bodies];
-  for (let t = 0; t < steps; t++) {
-    for (const command of program.get(t) ?? []) {
-      if (command.kind === 'impulse') bodies[command.body].applyLinearImpulse(command.impulse);
-      else if (command.kind === 'velocity') bodies[command.body].setLinearVelocity(command.velocity);
-      else bodies.push(createSceneBody(world, command.body));
-    }
-    world.step(ROOM_DT);
-  }
-  return stateHash(world);
-}
 
 describe('RoomPool', () => {
   it('a room moved to another worker mid-run gives the bits of one never moved and of a plain World', async () => {
     const pool = openPool(2);
-    await pool.createRoom('moved', spec, 0);
-    await pool.createRoom('stays', spec, 0);
+    await pool.createRoom('moved', roomSpec, 0);
+    await pool.createRoom('stays', roomSpec, 0);
     await pool.createRoom('other', { scene: roomScene(8) }, 1);
     let hashAtMove = 0;
     for (let t = 0; t < STEPS; t++) {
-      const commands = program.get(t) ?? [];
+      const commands = roomProgram.get(t) ?? [];
       if (t === 45) {
         hashAtMove = await pool.stateHash('moved');
         // one command queued before the move travels with the room; one sent during it follows it
@@ -90,10 +52,10 @@ describe('RoomPool', () => {
     }
     const moved = await pool.stateHash('moved');
     expect(moved).toBe(await pool.stateHash('stays'));
-    expect(moved).toBe(plainHash(STEPS));
+    expect(moved).toBe(plainRoomHash(STEPS));
     // the room moved between those hashes: equal hashes of a world at rest would prove little
     expect(moved).not.toBe(hashAtMove);
-    expect(hashAtMove).toBe(plainHash(45));
+    expect(hashAtMove).toBe(plainRoomHash(45));
 
     // the moved room's snapshot restores here to the same state, and it kept count of its steps
     const { snapshot, steps } = await pool.snapshot('moved');
@@ -107,21 +69,21 @@ describe('RoomPool', () => {
 
   it('rooms on the 60 Hz clock step as a plain World does, for as many steps as they took', async () => {
     const pool = openPool(1);
-    await pool.createRoom('a', spec);
+    await pool.createRoom('a', roomSpec);
     await pool.start();
     // wait for some steps, however long they take on this machine
     while ((await pool.stats())[0].rooms[0].steps < 20) await new Promise((r) => setTimeout(r, 20));
     await pool.stop();
     const [stats] = await pool.stats();
     const steps = stats.rooms[0].steps;
-    const { world } = buildFulcrumWorld(spec.scene, { enableSleep: false });
+    const { world } = buildFulcrumWorld(roomSpec.scene, { enableSleep: false });
     for (let t = 0; t < steps; t++) world.step(ROOM_DT);
     expect(await pool.stateHash('a')).toBe(stateHash(world));
   });
 
   it('rejects a bad command with a FulcrumError and queues nothing', async () => {
     const pool = openPool(1);
-    await pool.createRoom('a', spec);
+    await pool.createRoom('a', roomSpec);
     const bad: RoomCommand[] = [
       { kind: 'impulse', body: 200, impulse: { x: 1, y: 1 } },
       { kind: 'impulse', body: 1.5, impulse: { x: 1, y: 1 } },
@@ -138,7 +100,7 @@ describe('RoomPool', () => {
       await expect(result).rejects.toThrow(/command|radius/);
     }
     await pool.step(30);
-    const { world } = buildFulcrumWorld(spec.scene, { enableSleep: false });
+    const { world } = buildFulcrumWorld(roomSpec.scene, { enableSleep: false });
     for (let t = 0; t < 30; t++) world.step(ROOM_DT);
     expect(await pool.stateHash('a')).toBe(stateHash(world));
     await pool.removeRoom('a');
@@ -157,11 +119,11 @@ describe('RoomPool', () => {
         const pool = openPool(2, crashing());
         const failures: WorkerFailure[] = [];
         pool.on('failure', (failure) => failures.push(failure));
-        await pool.createRoom('a', spec, 0);
-        await pool.createRoom('b', spec, 1);
+        await pool.createRoom('a', roomSpec, 0);
+        await pool.createRoom('b', roomSpec, 1);
         await pool.step(2);
 
-        await expect(pool.createRoom(room, spec, 0)).rejects.toThrow(why);
+        await expect(pool.createRoom(room, roomSpec, 0)).rejects.toThrow(why);
         expect(failures.length).toBe(1);
         expect(failures[0].worker).toBe(0);
         expect(failures[0].rooms.sort()).toEqual(['a', room]);
@@ -173,10 +135,10 @@ describe('RoomPool', () => {
         ).rejects.toThrow(why);
         await expect(pool.step()).rejects.toThrow(why);
         // the other worker's room goes on, and new rooms go there
-        const { world } = buildFulcrumWorld(spec.scene, { enableSleep: false });
+        const { world } = buildFulcrumWorld(roomSpec.scene, { enableSleep: false });
         for (let t = 0; t < 2; t++) world.step(ROOM_DT);
         expect(await pool.stateHash('b')).toBe(stateHash(world));
-        await pool.createRoom('c', spec);
+        await pool.createRoom('c', roomSpec);
         expect(pool.workerOf('c')).toBe(1);
       }, 20_000);
     }
