@@ -1,6 +1,5 @@
 import type { Body } from '../api/body';
 import type { World } from '../api/world';
-import { checkBoolean } from '../core/errors';
 import { checkAngle, checkNonNegativeForce, checkRate } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import { motorImpulse } from '../solver/axial-rows';
@@ -67,37 +66,15 @@ export class PrismaticJoint extends SliderJoint {
     this.o = options;
   }
 
-  enableMotor(enable: boolean): void {
-    checkBoolean('enable', enable);
-    this.changing();
-    this.o.enableMotor = enable;
-  }
-
-  setMotorSpeed(speed: number): void {
-    checkRate('speed', speed);
-    this.changing();
-    this.o.motorSpeed = speed;
-  }
-
   setMaxMotorForce(force: number): void {
     checkNonNegativeForce('force', force);
     this.changing();
     this.o.maxMotorForce = force;
   }
 
-  getReactionForce(): Vec2 {
-    this.check();
-    return this.sliderForce();
-  }
-
   getReactionTorque(): number {
     this.check();
     return this.angularImpulse * this.invH;
-  }
-
-  /** @internal */
-  protected hasMotor(): boolean {
-    return this.o.enableMotor;
   }
 
   /** @internal motor, spring and limits push along the axis: one axial row (limits: see Joint) */

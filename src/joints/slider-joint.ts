@@ -1,7 +1,7 @@
 import type { Body } from '../api/body';
 import type { World } from '../api/world';
 import { checkBoolean, FulcrumError } from '../core/errors';
-import { checkCoordinate, checkHertz, checkNonNegativeRate } from '../core/limits';
+import { checkCoordinate, checkHertz, checkNonNegativeRate, checkRate } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import { limitImpulse } from '../solver/axial-rows';
 import type { JointContext } from '../solver/joint-context';
@@ -79,6 +79,8 @@ export interface SliderOptions {
 export abstract class SliderJoint extends Joint {
   /** @internal */
   s: SliderOptions;
+  /** @internal the subclass's options: both joints have a motor */
+  abstract o: { enableMotor: boolean; motorSpeed: number };
   /** @internal */
   protected perpImpulse = 0;
   /** @internal */
@@ -119,6 +121,18 @@ export abstract class SliderJoint extends Joint {
   ) {
     super(world, bodyA, bodyB, localAnchorA, localAnchorB, collideConnected, userData);
     this.s = slider;
+  }
+
+  enableMotor(enable: boolean): void {
+    checkBoolean('enable', enable);
+    this.changing();
+    this.o.enableMotor = enable;
+  }
+
+  setMotorSpeed(speed: number): void {
+    checkRate('speed', speed);
+    this.changing();
+    this.o.motorSpeed = speed;
   }
 
   /** Translation of B's anchor along the axis from A's anchor (m). */
@@ -238,7 +252,7 @@ export abstract class SliderJoint extends Joint {
 
   /** @internal the rows along the axis (spring, limits, and the subclass's motor) */
   override iteratesInTree(): boolean {
-    return this.s.enableSpring || this.s.enableLimit || this.hasMotor();
+    return this.s.enableSpring || this.s.enableLimit || this.o.enableMotor;
   }
 
   /** @internal the row along the axis */
@@ -251,9 +265,6 @@ export abstract class SliderJoint extends Joint {
     jB[1] = this.uy;
     jB[2] = this.a2;
   }
-
-  /** @internal Whether the subclass's motor is on. */
-  protected abstract hasMotor(): boolean;
 
   /**
    * Writes the perpendicular row (no motion of B's anchor across the axis) as row `row` of tree joint
@@ -449,8 +460,9 @@ export abstract class SliderJoint extends Joint {
     }
   }
 
-  /** @internal Force on B from the axial and perpendicular impulses. */
-  protected sliderForce(): Vec2 {
+  /** Force on B from the axial and perpendicular impulses (N). */
+  getReactionForce(): Vec2 {
+    this.check();
     const axial =
       (this.springImpulse + this.axialImpulse + this.lowerImpulse - this.upperImpulse) * this.invH;
     const perp = this.perpImpulse * this.invH;

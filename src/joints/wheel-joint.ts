@@ -1,6 +1,5 @@
 import type { Body } from '../api/body';
 import type { World } from '../api/world';
-import { checkBoolean } from '../core/errors';
 import { checkNonNegativeForce, checkRate } from '../core/limits';
 import type { Vec2 } from '../math/vec2';
 import { motorImpulse } from '../solver/axial-rows';
@@ -65,37 +64,15 @@ export class WheelJoint extends SliderJoint {
     this.o = options;
   }
 
-  enableMotor(enable: boolean): void {
-    checkBoolean('enable', enable);
-    this.changing();
-    this.o.enableMotor = enable;
-  }
-
-  setMotorSpeed(speed: number): void {
-    checkRate('speed', speed);
-    this.changing();
-    this.o.motorSpeed = speed;
-  }
-
   setMaxMotorTorque(torque: number): void {
     checkNonNegativeForce('torque', torque);
     this.changing();
     this.o.maxMotorTorque = torque;
   }
 
-  getReactionForce(): Vec2 {
-    this.check();
-    return this.sliderForce();
-  }
-
   getReactionTorque(): number {
     this.check();
     return this.motorImpulse * this.invH;
-  }
-
-  /** @internal */
-  protected hasMotor(): boolean {
-    return this.o.enableMotor;
   }
 
   /** @internal row 0 the motor's (B turns relative to A), row 1 along the axis (spring, limits) */
