@@ -18,20 +18,25 @@ export async function startThread(url: URL | string): Promise<Thread> {
     message: (data) => {
       const asked = waiting;
       waiting = null;
+      thread.hold(false);
       asked?.resolve(data);
     },
     failure: (error) => {
       const asked = waiting;
       waiting = null;
+      thread.hold(false);
       if (asked === null) throw error;
       asked.reject(error);
     },
   });
   return {
     post: (message) => thread.post(message),
+    // the worker keeps Node's process alive while an answer is awaited (a script that awaits
+    // workersReady and nothing else would end there, its promise never settled), and only then
     ask: (message) =>
       new Promise((resolve, reject) => {
         waiting = { resolve, reject };
+        thread.hold(true);
         thread.post(message);
       }),
     end: () => thread.end(),
