@@ -154,3 +154,24 @@ export function capturePointer(ctx: DemoContext, event: PointerEvent): void {
     // a synthetic event has no active pointer to capture
   }
 }
+
+/**
+ * Fills a disc of `radius` at (x, y) with `skin`, a gradient laid out for the unit disc at the
+ * origin, so that one gradient serves balls of every size.
+ */
+export function fillSkinnedDisc(
+  c: CanvasRenderingContext2D,
+  x: number,
+  y: number,
+  radius: number,
+  skin: CanvasGradient,
+): void {
+  c.save();
+  c.translate(x, y);
+  c.scale(radius, radius);
+  c.fillStyle = skin;
+  c.beginPath();
+  c.arc(0, 0, 1, 0, 2 * Math.PI);
+  c.fill();
+  c.restore();
+}

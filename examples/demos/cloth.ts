@@ -16,7 +16,7 @@ import {
   type World,
 } from '../../src/index';
 import type { Demo } from '../demo';
-import { capturePointer, drawnPosition, stepHook } from '../lib';
+import { capturePointer, drawnPosition, fillSkinnedDisc, stepHook } from '../lib';
 
 const COLUMNS = 25;
 const ROWS = 17;
@@ -323,15 +323,7 @@ export const clothDemo: Demo = {
         // the balls, lit from the upper left
         for (const [i, ball] of balls.entries()) {
           const p = drawnPosition(ctx.runner, ball);
-          const radius = radii[i];
-          c.save();
-          c.translate(p.x, p.y);
-          c.scale(radius, radius);
-          c.fillStyle = ballSkin as CanvasGradient;
-          c.beginPath();
-          c.arc(0, 0, 1, 0, 2 * Math.PI);
-          c.fill();
-          c.restore();
+          fillSkinnedDisc(c, p.x, p.y, radii[i], ballSkin as CanvasGradient);
         }
         render.setScreenTransform();
       }),

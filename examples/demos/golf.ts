@@ -5,7 +5,7 @@
  */
 import { type Body, Shape, type ShapeHandle, type Vec2, World } from '../../src/index';
 import type { Demo } from '../demo';
-import { capturePointer, drawnPosition, stepHook, worldText } from '../lib';
+import { capturePointer, drawnPosition, fillSkinnedDisc, stepHook, worldText } from '../lib';
 
 export const BALL_RADIUS = 0.2;
 /** the ball's speed per metre of pull, 1/s */
@@ -476,14 +476,7 @@ export const golfDemo: Demo = {
         c.beginPath();
         c.ellipse(b.x + 0.05, b.y - BALL_RADIUS + 0.02, BALL_RADIUS, BALL_RADIUS * 0.3, 0, 0, 2 * Math.PI);
         c.fill();
-        c.save();
-        c.translate(b.x, b.y);
-        c.scale(BALL_RADIUS, BALL_RADIUS);
-        c.fillStyle = ballSkin as CanvasGradient;
-        c.beginPath();
-        c.arc(0, 0, 1, 0, 2 * Math.PI);
-        c.fill();
-        c.restore();
+        fillSkinnedDisc(c, b.x, b.y, BALL_RADIUS, ballSkin as CanvasGradient);
         render.setScreenTransform();
       }),
     );
