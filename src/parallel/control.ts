@@ -25,7 +25,10 @@ export enum Control {
   COUNT = 5,
   /** set to 1 by a thread whose share of the preparation found a heavy pair */
   HEAVY = 6,
-  /** the plan: per phase, threads + 1 constraint indices, thread t solving from the t-th to the next */
+  /**
+   * the plan: per phase, threads + 1 constraint indices, thread t solving from the t-th to the next;
+   * after the plan's longest, threads + 1 indices of the awake bodies in the same way (bodyBoundsAt)
+   */
   PLAN = 8,
 }
 
@@ -36,7 +39,11 @@ export enum Param {
   THRESHOLD = 2,
   USE_BIAS = 3,
   FRICTION_MIN = 4,
-  SIZE = 5,
+  H = 5,
+  MAX_LINEAR_SPEED = 6,
+  LAST = 7,
+  SUBSTEPS = 8,
+  SIZE = 9,
 }
 
 /** @internal What a worker is asked to do. */
@@ -49,12 +56,18 @@ export enum Pass {
   /** go back to the event loop and take the columns posted to it (they were moved or grown) */
   BIND = 5,
   STOP = 6,
+  /** integrateVelocities over the thread's awake bodies (a step split by island) */
+  VELOCITIES = 7,
+  /** integratePositions over the thread's awake bodies */
+  POSITIONS = 8,
+  /** every substep of the thread's islands, restitution and the impulses kept (contacts alone) */
+  ISLANDS = 9,
 }
 
 /** @internal The columns the passes read or write, by owner: what a team shares and binds. */
 export const TEAM_COLUMNS = {
   cc: ['data', 'ids', 'softness', 'restitution'],
-  bodies: ['state', 'invMass', 'invInertia', 'cx', 'cy'],
+  bodies: ['state', 'kind', 'invMass', 'invInertia', 'cx', 'cy'],
   contacts: [
     'bodyA',
     'bodyB',
@@ -74,15 +87,25 @@ export const TEAM_COLUMNS = {
   shapes: ['friction', 'restitution', 'radius'],
 } as const;
 
-/** @internal A team's columns as posted to a worker: by owner and name (TEAM_COLUMNS), and the order. */
+/**
+ * @internal A team's columns as posted to a worker: by owner and name (TEAM_COLUMNS), the order of
+ * the constraints, and the awake bodies grouped by thread with their velocity updates.
+ */
 export interface TeamColumns {
   order: Int32Array;
+  awake: Int32Array;
+  update: Float64Array;
   owners: Record<keyof typeof TEAM_COLUMNS, Record<string, Float64Array | Int32Array | Uint8Array>>;
 }
 
 /** @internal the control block's length in Int32 for `threads` threads and `colors` colours */
 export function controlLength(threads: number, colors: number): number {
-  // a phase per colour and the overflow's
+  return bodyBoundsAt(threads, colors) + threads + 1;
+}
+
+/** @internal where the awake bodies' bounds by thread start in the control block */
+export function bodyBoundsAt(threads: number, colors: number): number {
+  // after a phase per colour and the overflow's
   return Control.PLAN + (colors + 1) * (threads + 1);
 }
 
@@ -101,6 +124,9 @@ export interface TeamThread {
   contacts: ContactStore;
   shapes: ShapeStore;
   order: Int32Array;
+  /** the awake bodies grouped by thread (a step split by island), and their velocity updates */
+  awake: Int32Array;
+  update: Float64Array;
 }
 
 /** spins at a barrier between looks at the clock */
@@ -144,14 +170,18 @@ export function barrier(team: TeamThread): void {
   }
 }
 
-/** @internal A worker's wait for the next pass after `seen`: spins a while, then sleeps. */
+/**
+ * @internal A worker's wait for the next pass after `seen`: spins a while, then sleeps; woken with no
+ * new pass (SolverTeam.rouse), it spins again.
+ */
 export function awaitPass(control: Int32Array, seen: number): number {
-  for (let i = 0; i < SPINS_BEFORE_SLEEP; i++) {
-    const epoch = Atomics.load(control, Control.EPOCH);
-    if (epoch !== seen) return epoch;
+  for (;;) {
+    for (let i = 0; i < SPINS_BEFORE_SLEEP; i++) {
+      const epoch = Atomics.load(control, Control.EPOCH);
+      if (epoch !== seen) return epoch;
+    }
+    Atomics.wait(control, Control.EPOCH, seen);
   }
-  Atomics.wait(control, Control.EPOCH, seen);
-  return Atomics.load(control, Control.EPOCH);
 }
 
 /** @internal Runs the thread's share of the pass: of every phase of the plan, or of all constraints. */
@@ -163,6 +193,16 @@ export function runPass(team: TeamThread, pass: Pass): void {
     const to = Math.floor((count * (team.thread + 1)) / team.threads);
     if (pass === Pass.STORE) team.passes.store(team.cc, team.contacts, from, to);
     else if (prepareShare(team, from, to)) Atomics.store(team.control, Control.HEAVY, 1);
+    barrier(team);
+    return;
+  }
+  if (pass === Pass.VELOCITIES || pass === Pass.POSITIONS) {
+    integrateShare(team, pass);
+    barrier(team);
+    return;
+  }
+  if (pass === Pass.ISLANDS) {
+    stepIslands(team);
     barrier(team);
     return;
   }
@@ -186,6 +226,56 @@ export function runPass(team: TeamThread, pass: Pass): void {
     }
     barrier(team);
   }
+}
+
+function integrateShare(team: TeamThread, pass: Pass): void {
+  const { control, params } = team;
+  const at = bodyBoundsAt(team.threads, team.passes.colors) + team.thread;
+  const h = params[Param.H];
+  const maxSpeed = params[Param.MAX_LINEAR_SPEED];
+  if (pass === Pass.VELOCITIES) {
+    team.passes.integrateVelocities(
+      team.bodies,
+      team.awake,
+      control[at],
+      control[at + 1],
+      team.update,
+      h,
+      maxSpeed,
+    );
+  } else {
+    const last = params[Param.LAST] === 1;
+    team.passes.integratePositions(team.bodies, team.awake, control[at], control[at + 1], h, maxSpeed, last);
+  }
+}
+
+/**
+ * The solve of a step whose constraints are contacts alone, split by island: the thread's islands
+ * through the same sequence as the step's on one thread (world/solve.ts), with no joint pass between.
+ */
+function stepIslands(team: TeamThread): void {
+  const { control, params, passes, cc, bodies, awake, update } = team;
+  const state = bodies.state;
+  // the plan's one phase (SolverTeam.planIslands)
+  const from = control[Control.PLAN + team.thread];
+  const to = control[Control.PLAN + team.thread + 1];
+  const at = bodyBoundsAt(team.threads, passes.colors) + team.thread;
+  const first = control[at];
+  const end = control[at + 1];
+  const h = params[Param.H];
+  const invH = params[Param.INV_H];
+  const maxSpeed = params[Param.MAX_LINEAR_SPEED];
+  const push = params[Param.MAX_PUSH_SPEED];
+  const subSteps = params[Param.SUBSTEPS];
+  for (let i = 0; i < subSteps; i++) {
+    passes.integrateVelocities(bodies, awake, first, end, update, h, maxSpeed);
+    passes.warmStart(cc, state, from, to);
+    passes.solve(cc, state, invH, true, push, from, to);
+    passes.integratePositions(bodies, awake, first, end, h, maxSpeed, i === subSteps - 1);
+    passes.solve(cc, state, invH, false, push, from, to);
+  }
+  passes.restitution(cc, state, params[Param.THRESHOLD], from, to);
+  passes.store(cc, team.contacts, from, to);
 }
 
 function prepareShare(team: TeamThread, from: number, to: number): boolean {

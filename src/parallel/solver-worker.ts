@@ -54,6 +54,8 @@ function serve(port: WorkerSink): (message: TeamMessage) => void {
         contacts: {} as ContactStore,
         shapes: {} as ShapeStore,
         order: new Int32Array(0),
+        awake: new Int32Array(0),
+        update: new Float64Array(0),
       };
       seen = Atomics.load(control, Control.EPOCH);
       port.postMessage('ready');
@@ -61,12 +63,14 @@ function serve(port: WorkerSink): (message: TeamMessage) => void {
       return;
     }
     if (team === null) throw new Error('fulcrum: a solver worker got columns before its start');
-    const { owners, order } = message.columns;
+    const { owners, order, awake, update } = message.columns;
     Object.assign(team.cc, owners.cc);
     Object.assign(team.bodies, owners.bodies);
     Object.assign(team.contacts, owners.contacts);
     Object.assign(team.shapes, owners.shapes);
     team.order = order;
+    team.awake = awake;
+    team.update = update;
     // tells the calling thread that this worker works on the new columns
     barrier(team);
     work(team);

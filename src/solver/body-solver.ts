@@ -83,7 +83,8 @@ export function prepareVelocityUpdate(
 export function integrateVelocities(
   bodies: BodyStore,
   awake: Int32Array,
-  awakeCount: number,
+  from: number,
+  to: number,
   update: Float64Array,
   h: number,
   maxLinearSpeed: number,
@@ -91,7 +92,7 @@ export function integrateVelocities(
   const state = bodies.state;
   const kind = bodies.kind;
   const maxW = MAX_ROTATION_PER_SUBSTEP / h;
-  for (let i = 0, n = awakeCount & IndexBound.MAX; i < n; i++) {
+  for (let i = from, n = to & IndexBound.MAX; i < n; i++) {
     const b = awake[i] & IndexBound.MAX;
     if (kind[b] !== BodyKind.DYNAMIC) continue;
     const s = b * BodyState.STRIDE;
@@ -118,14 +119,15 @@ export function integrateVelocities(
 export function integratePositions(
   bodies: BodyStore,
   awake: Int32Array,
-  awakeCount: number,
+  from: number,
+  to: number,
   h: number,
   maxLinearSpeed: number,
   last: boolean,
 ): void {
   const state = bodies.state;
   const maxW = MAX_ROTATION_PER_SUBSTEP / h;
-  for (let i = 0, n = awakeCount & IndexBound.MAX; i < n; i++) {
+  for (let i = from, n = to & IndexBound.MAX; i < n; i++) {
     const b = awake[i] & IndexBound.MAX;
     const s = b * BodyState.STRIDE;
     clampVelocity(state, s, maxLinearSpeed, maxW);

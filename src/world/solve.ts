@@ -165,6 +165,7 @@ function prepareContacts(core: WorldCore, h: number): boolean {
   const contacts = core.contacts;
   const bodies = core.bodies;
   const cc = core.constraints;
+  core.team?.rouse();
   setSoftnessFor(core.work, cc, h);
   const coloring = core.coloring;
   coloring.begin(bodies.capacity, contacts.liveCount);
@@ -177,7 +178,10 @@ function prepareContacts(core: WorldCore, h: number): boolean {
   if (team?.begin(cc, coloring, contacts, bodies, core.shapes)) {
     teamed = true;
     cc.heavyPair = team.prepare(core.frictionMin);
-  } else {
+    // the heavy loads' passes go over the constraints in order: the colouring's, on this thread
+    if (cc.heavyPair && team.reordered) teamed = false;
+  }
+  if (!teamed) {
     const shapes = core.shapes;
     cc.heavyPair = prepareContactConstraints(
       cc,
@@ -226,10 +230,10 @@ function solveFineIslands(core: WorldCore, dt: number, subSteps: number, factor:
   setSoftnessFor(core.work, cc, h);
   prepareVelocityUpdate(bodies, fine.bodies, fine.count, h, core.gravityX, core.gravityY, fine.update);
   for (let i = 0; i < subSteps; i++) {
-    integrateVelocities(bodies, fine.bodies, fine.count, fine.update, h, settings.maxLinearSpeed);
+    integrateVelocities(bodies, fine.bodies, 0, fine.count, fine.update, h, settings.maxLinearSpeed);
     warmStartContacts(cc, state, 0, cc.count);
     solveContacts(cc, state, invH, true, settings.contactPushMaxSpeed, 0, cc.count);
-    integratePositions(bodies, fine.bodies, fine.count, h, settings.maxLinearSpeed, i === subSteps - 1);
+    integratePositions(bodies, fine.bodies, 0, fine.count, h, settings.maxLinearSpeed, i === subSteps - 1);
     solveContacts(cc, state, invH, false, settings.contactPushMaxSpeed, 0, cc.count);
     solveSupports(cc, state, invH);
   }
@@ -273,12 +277,25 @@ export function solve(core: WorldCore, dt: number): void {
   const awakeCount = fineFactor > 1 ? core.fineIslands.coarseCount : core.awakeCount;
   // the tree projects again after the others only if they act on its bodies
   const coupled = tree.isCoupled(cc.ids, cc.count);
-  if (core.velocityUpdate.length < awakeCount * VelocityUpdate.STRIDE)
+  // a step split by island: each thread integrates the bodies of its islands, which stay in its cache
+  const grouped = shared && team.reordered;
+  // contacts alone, and no kinematic body that threads share: each thread steps its islands alone
+  const alone = grouped && team.groupBodies(awake, awakeCount) && core.activeJoints.length === 0;
+  if (!grouped && core.velocityUpdate.length < awakeCount * VelocityUpdate.STRIDE)
     core.velocityUpdate = growF64(core.velocityUpdate, 2 * awakeCount * VelocityUpdate.STRIDE);
-  const update = core.velocityUpdate;
-  prepareVelocityUpdate(bodies, awake, awakeCount, h, core.gravityX, core.gravityY, update);
+  const list = grouped ? team.awake : awake;
+  const update = grouped ? team.update : core.velocityUpdate;
+  prepareVelocityUpdate(bodies, list, awakeCount, h, core.gravityX, core.gravityY, update);
+  if (alone) {
+    // each thread its islands through the whole solve below, with no joint between its passes
+    const maxSpeed = settings.maxLinearSpeed;
+    team.stepIslands(h, invH, subSteps, maxSpeed, pushSpeed, settings.restitutionThreshold);
+    reportHits(core, core.coloring.order, 1, 0);
+    return;
+  }
   for (let i = 0; i < subSteps; i++) {
-    integrateVelocities(bodies, awake, awakeCount, update, h, settings.maxLinearSpeed);
+    if (grouped) team.integrateVelocities(h, settings.maxLinearSpeed);
+    else integrateVelocities(bodies, awake, 0, awakeCount, update, h, settings.maxLinearSpeed);
     hinges.warmStart(state, ctx.warmSpeedLimit, ctx.warmTurnLimit);
     for (let j = 0; j < iterativeCount; j++) iterative[j].warmStartGuarded(ctx);
     if (shared) team.warmStart();
@@ -292,7 +309,8 @@ export function solve(core: WorldCore, dt: number): void {
     if (shared) team.solve(invH, true, pushSpeed);
     else solveContacts(cc, state, invH, true, pushSpeed, 0, cc.count);
     if (coupled) tree.project(state, treeBias, false);
-    integratePositions(bodies, awake, awakeCount, h, settings.maxLinearSpeed, i === subSteps - 1);
+    if (grouped) team.integratePositions(h, settings.maxLinearSpeed, i === subSteps - 1);
+    else integratePositions(bodies, awake, 0, awakeCount, h, settings.maxLinearSpeed, i === subSteps - 1);
     tree.factor(ctx, false, i === subSteps - 1);
     tree.stabilizeSubstep(ctx, settings.maxLinearSpeed * h, MAX_ROTATION_PER_SUBSTEP);
     // The projection is affine, v -> P v + c, with P a projector: when nothing else acts on the tree's
@@ -314,17 +332,22 @@ export function solve(core: WorldCore, dt: number): void {
   else applyRestitution(cc, state, settings.restitutionThreshold, 0, cc.count);
   if (team !== null) team.store();
   else storeImpulses(cc, core.contacts, 0, cc.count);
-  reportHits(core);
+  // in the colouring's order: the constraints' may be the islands' (see ContactTeam.reordered)
+  if (team?.reordered) reportHits(core, core.coloring.order, 1, 0);
+  else reportHits(core, cc.ids, 3, 2);
 }
 
-/** Records a hit event per touching contact whose approach speed passed the threshold. */
-function reportHits(core: WorldCore): void {
+/**
+ * Records a hit event per touching contact whose approach speed passed the threshold, the step's
+ * contacts taken in the order of `slots[i * stride + at]`.
+ */
+function reportHits(core: WorldCore, slots: Int32Array, stride: number, at: number): void {
   const cc = core.constraints;
   const contacts = core.contacts;
   const shapes = core.shapes;
   const threshold = core.hitEventThreshold;
   for (let i = 0; i < cc.count; i++) {
-    const c = cc.ids[i * 3 + 2];
+    const c = slots[i * stride + at];
     const a = contacts.shapeA[c];
     const b = contacts.shapeB[c];
     if (((shapes.flags[a] | shapes.flags[b]) & ShapeFlag.HIT_EVENTS) === 0) continue;
