@@ -25,9 +25,12 @@ const CORE_BUDGET = 60_000;
  * the contact passes' ranges: 0.64 kB; the team itself is loaded on demand and not counted); 80.8 kB
  * with issue 28's cold start (the step's long loops in functions that end with them, so that V8's
  * on-stack-replaced code is not thrown away at every step, and the contact columns reserved at once:
- * 0.17 kB) and issue 26's shared worker starter. Issue 23 holds the 60 kB goal.
+ * 0.17 kB) and issue 26's shared worker starter; 81.1 kB with issue 28's split by island (the
+ * step's side: the team's integration and whole-solve passes, the heavy step's fallback, hit events in
+ * the colouring's order: 0.35 kB; the split itself is in the team's chunk). Issue 23 holds the 60 kB
+ * goal.
  */
-const CORE_CEILING = 80_800;
+const CORE_CEILING = 81_100;
 
 const root = path.resolve(import.meta.dirname, '..');
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), 'fulcrum-pack-'));
