@@ -7,6 +7,12 @@ import { type BrowserContext, chromium } from 'playwright-core';
 
 export const CHROMIUM = process.env.CHROMIUM_PATH ?? '/usr/bin/chromium';
 
+/**
+ * E2E_CPU_THROTTLE=n (n > 1): every page's CPU slowed n times (Chromium's DevTools emulation), to show
+ * that the tests do not depend on how fast the machine is (`npm run test:e2e:soak -- --throttle n`).
+ */
+const THROTTLE = Number(process.env.E2E_CPU_THROTTLE ?? 1);
+
 export interface Browser {
   context: BrowserContext;
   close(): Promise<void>;
@@ -34,6 +40,13 @@ export async function launchChromium(): Promise<Browser> {
       '--disable-sync',
     ],
   });
+  if (THROTTLE > 1) {
+    context.on('page', (page) => {
+      void context
+        .newCDPSession(page)
+        .then((cdp) => cdp.send('Emulation.setCPUThrottlingRate', { rate: THROTTLE }));
+    });
+  }
   return {
     context,
     close: async () => {
