@@ -1,3 +1,4 @@
+import { arcTangent2 } from './arc-tangent';
 import type { Rot } from './vec2';
 
 // Cody-Waite split of pi/2 so that the range reduction keeps full precision for everyday angles.
@@ -62,7 +63,12 @@ export function makeRot(angle: number): Rot {
   return makeRotInto(angle, { c: 1, s: 0 });
 }
 
-/** Angle of a rotation in (-pi, pi]. For output only: never feeds the step. */
+/**
+ * Angle of a rotation in [-pi, pi]. For output only (it never feeds the step), but the same bits on
+ * every engine too: Math.atan2 is not specified to the last bit, and Chromium 156.0.8078.108's gave
+ * other bits than Node 20's for the bench's pyramid after one step (body.angle, read by the browser
+ * bench's test that compares Chromium's transforms with Node's).
+ */
 export function rotAngle(c: number, s: number): number {
-  return Math.atan2(s, c); // output only
+  return arcTangent2(s, c);
 }
