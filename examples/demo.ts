@@ -37,6 +37,13 @@ export interface Demo {
   title: string;
   description: string;
   view: CameraView;
+  /**
+   * Half the width of the world the view must show: on a canvas too narrow for it at the view's
+   * height (a phone held upright), the view zooms out until it fits, keeping its lower edge (the
+   * ground stays at the bottom) or, with fitAnchor 'center', its centre.
+   */
+  fitWidth?: number;
+  fitAnchor?: 'bottom' | 'center';
   flags?: Partial<DebugDrawFlags>;
   /** false for a demo whose own renderer ignores the gallery's draw switches: they are hidden */
   drawSwitches?: boolean;

@@ -98,6 +98,25 @@ function stopDemo(): void {
   pointer.filter = (body) => body.type === 'dynamic';
 }
 
+/**
+ * The demo's zoom for the canvas as it is: zoomed out from its view where the canvas is too narrow to
+ * show its fitWidth (a phone held upright). Called whenever the canvas changes size, which is also
+ * when it is first laid out.
+ */
+function fitDemoWidth(demo: Demo): void {
+  if (demo.fitWidth === undefined) return;
+  render.resize();
+  const camera = render.camera;
+  const view = demo.view;
+  const halfHeight = Math.max(view.halfHeight, (demo.fitWidth * camera.height) / camera.width);
+  const lift = demo.fitAnchor === 'center' ? 0 : halfHeight - view.halfHeight;
+  camera.setView({ center: { x: view.center.x, y: view.center.y + lift }, halfHeight });
+}
+
+new ResizeObserver(() => {
+  if (current !== null) fitDemoWidth(current);
+}).observe(canvas);
+
 function startDemo(demo: Demo): void {
   stopDemo();
   current = demo;
@@ -106,6 +125,7 @@ function startDemo(demo: Demo): void {
   $('flags').style.display = demo.drawSwitches === false ? 'none' : '';
   render.resize();
   render.camera.setView(demo.view);
+  fitDemoWidth(demo);
   runner.maxStepsPerFrame = demo.maxStepsPerFrame ?? 4;
   const ctx: DemoContext = {
     render,

@@ -14,6 +14,7 @@ export const chainBridgeDemo: Demo = {
   description:
     'A rope bridge of twenty planks on revolute joints carries five boxes (scenes/joint-scenes.ts); a chain of capsule links swings a heavy ball into them. Drag the planks, the boxes or the ball.',
   view: { center: { x: 0, y: 4.2 }, halfHeight: 6.8 },
+  fitWidth: 10.6,
   create: (ctx) => {
     const scene = bridge({ planks: PLANKS });
     const { world, bodies } = buildFulcrumWorld(scene);

@@ -123,6 +123,7 @@ export const clothDemo: Demo = {
   title: 'Cloth',
   description: `A curtain of 425 small circles tied to their neighbours by soft distance joints (scenes/soft-bodies.ts), pinned along its rod, swaying in a breeze (body.applyForce) and painted as a woven sheet between the circles. A link stretched past ${TEAR} times its length is destroyed (world.destroyJoint) and the sheet tears there. Drag the cloth hard or throw a ball into it; the shapes switch shows the circles.`,
   view: { center: { x: 0, y: 5.4 }, halfHeight: 5 },
+  fitWidth: 4.5,
   flags: { shapes: false, joints: false, sleeping: false },
   create: (ctx) => {
     const { world, nodes, links, linkOf } = buildCloth();

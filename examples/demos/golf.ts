@@ -197,6 +197,7 @@ export const golfDemo: Demo = {
   description:
     'Mini golf in three holes. Drag back from the ball and let go to putt: the longer the pull, the harder the stroke (body.applyLinearImpulse); aim up to chip the ball over the wall. The cup is a sensor shape whose sensorBegin event tells the ball is in; the windmill is a kinematic body.',
   view: { center: { x: 0, y: 1.5 }, halfHeight: 6 },
+  fitWidth: 11,
   flags: { shapes: false, joints: false, sleeping: false },
   create: (ctx) => {
     const world = new World();
@@ -323,8 +324,15 @@ export const golfDemo: Demo = {
           ballSkin.addColorStop(0.6, '#eef0f2');
           ballSkin.addColorStop(1, '#a8adb5');
         }
+        // the whole canvas: zoomed out on a narrow screen it reaches far above the course
+        const seen = render.camera.visibleBounds();
         c.fillStyle = sky;
-        c.fillRect(-40, -20, 80, 40);
+        c.fillRect(
+          seen.lowerBound.x,
+          seen.lowerBound.y,
+          seen.upperBound.x - seen.lowerBound.x,
+          seen.upperBound.y - seen.lowerBound.y,
+        );
         c.fillStyle = '#a9d8a0';
         c.fill(hills);
         const h = holes[hole];
@@ -462,14 +470,13 @@ export const golfDemo: Demo = {
             worldText(c, pixel, { x: b.x, y: b.y + 0.7 }, `${Math.round(power * 100)} %`, '#1d2b1a', 13);
           }
         } else if (ready() && strokes === 0) {
-          worldText(
-            c,
-            pixel,
-            { x: b.x + 3.4, y: b.y + 1.3 },
-            'drag back from the ball, let go to putt',
-            '#1d2b1a',
-            14,
-          );
+          const hint = 'drag back from the ball, let go to putt';
+          // beside the ball, but all of it on the canvas (a phone's is narrow)
+          c.font = '14px system-ui, sans-serif';
+          const half = (c.measureText(hint).width / 2) * pixel + 0.2;
+          const { lowerBound, upperBound } = render.camera.visibleBounds();
+          const x = Math.min(upperBound.x - half, Math.max(lowerBound.x + half, b.x + 3.4));
+          worldText(c, pixel, { x, y: b.y + 1.3 }, hint, '#1d2b1a', 14);
         }
         // the ball and its shadow
         c.fillStyle = 'rgba(0, 0, 0, 0.18)';

@@ -12,6 +12,7 @@ export const newtonsCradleDemo: Demo = {
   description:
     'Five steel balls on 2 m distance joints (scenes/joint-scenes.ts), restitution 1, hanging 2 cm apart so each impact is solved on its own and the momentum passes down the row. Lift one, two or three balls and let go.',
   view: { center: { x: 0, y: 2.5 }, halfHeight: 2.6 },
+  fitWidth: 2.8,
   flags: { sleeping: false },
   create: (ctx) => {
     const { world, bodies } = buildFulcrumWorld(newtonsCradle({ count: COUNT }));

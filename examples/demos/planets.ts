@@ -54,6 +54,8 @@ export const planetsDemo: Demo = {
   description:
     'No world gravity: every step a preStep handler pulls each body towards the sun and the two planets with F = G m M / r² through body.applyForce. Press and drag to throw a rock (the dotted line shows its path): thrown across the sun fast enough, it orbits. Rocks leave trails, collide, and burn up in the sun.',
   view: { center: { x: 0, y: 0 }, halfHeight: 24 },
+  fitWidth: 21,
+  fitAnchor: 'center',
   flags: { shapes: false, joints: false, sleeping: false },
   create: (ctx) => {
     const world = new World({ gravity: { x: 0, y: 0 } });

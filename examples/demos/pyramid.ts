@@ -8,6 +8,7 @@ export const pyramidDemo: Demo = {
   description:
     'Twenty rows of one-metre boxes drop into place and stand as a pyramid. Drag a box with the mouse or a finger; drag empty space to pan; wheel or pinch to zoom.',
   view: { center: { x: 0, y: 9.5 }, halfHeight: 12 },
+  fitWidth: 11,
   create: () => {
     const world = new World();
     ground(world, 30);

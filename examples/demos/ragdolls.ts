@@ -71,6 +71,7 @@ export const ragdollsDemo: Demo = {
   description:
     'Ragdolls tumble down a flight of stairs: capsule limbs on revolute joints with angle limits at the hips, knees, shoulders, elbows and neck (scenes/joint-scenes.ts). Each is pushed off the landing; one at rest at the bottom is carried up and pushed again. Drag a ragdoll by any limb; "Push one" sends the next down.',
   view: { center: { x: -2.7, y: 3.3 }, halfHeight: 4.5 },
+  fitWidth: 7.1,
   flags: { shapes: false, joints: false, sleeping: false },
   create: (ctx) => {
     const bodies: SceneBody[] = [stairs()];

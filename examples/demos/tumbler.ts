@@ -8,6 +8,7 @@ export const tumblerDemo: Demo = {
   description:
     'A kinematic drum turns at a steady rate with 400 boxes inside (scenes/tumbler.ts): kinematic bodies push dynamic ones but nothing pushes them.',
   view: { center: { x: 0, y: 10 }, halfHeight: 12.5 },
+  fitWidth: 11.2,
   create: () => {
     const { world } = buildFulcrumWorld(tumbler({ count: 400, angularVelocity: 0.5 }));
     return { world };

@@ -412,3 +412,42 @@ describe('the layout', () => {
     });
   }
 });
+
+describe('a phone', () => {
+  type CameraWindow = Window & {
+    gallery: {
+      demo: string;
+      render: { camera: { visibleBounds(): { lowerBound: { x: number }; upperBound: { x: number } } } };
+    };
+  };
+
+  it('held upright: each demo shows the width it asks for (fitWidth), the stage takes the screen under the controls', async () => {
+    const fitted = demos.filter((d) => d.fitWidth !== undefined);
+    expect(fitted.length).toBeGreaterThan(5);
+    const open = await openLanding(browser.context, url);
+    try {
+      await open.page.setViewportSize({ width: 390, height: 844 });
+      for (const demo of fitted) {
+        await open.page.goto(`${url}#${demo.id}`);
+        await open.page.waitForFunction(
+          (id) => (window as unknown as CameraWindow).gallery.demo === id,
+          demo.id,
+        );
+        const seen = await open.page.evaluate(() => {
+          const b = (window as unknown as CameraWindow).gallery.render.camera.visibleBounds();
+          return (b.upperBound.x - b.lowerBound.x) / 2;
+        });
+        // to rounding: the zoom is worked out from the canvas' size in whole pixels
+        expect(seen, demo.id).toBeGreaterThan(demo.fitWidth! - 1e-9);
+        // the list of demos gives way ("← Gallery" leads back to it)
+        expect(await open.page.isVisible('#demo-list'), demo.id).toBe(false);
+        const stage = await open.page.locator('#stage').boundingBox();
+        expect(stage!.y, demo.id).toBeLessThan(844 / 2);
+        expect(stage!.y + stage!.height, demo.id).toBeGreaterThan(844 * 0.8);
+      }
+      expect(open.errors).toEqual([]);
+    } finally {
+      await open.close();
+    }
+  });
+});
