@@ -99,7 +99,7 @@ export class SolverTeam implements ContactTeam {
     owners: { cc: {}, bodies: {}, contacts: {}, shapes: {} },
   };
   private stopped = false;
-  /** whether shareBodies moved a body column the workers have not been given yet */
+  /** whether a column the workers have not been given yet moved (shareBodies; the order grown) */
   private moved = false;
   private readonly islands: IslandSplit;
   /** steps whose contacts the team solved: how a test knows the workers did the work */
@@ -231,19 +231,19 @@ export class SolverTeam implements ContactTeam {
     this.reordered = false;
     if (this.stopped || count < Math.min(this.minIslands, this.minConstraints)) return false;
     const self = this.self;
-    let moved = this.moved;
     if (self.order.length < count) {
       self.order = shared(new Int32Array(Math.max(count, 2 * self.order.length)));
       this.bound.order = self.order;
-      moved = true;
+      // posted at the next bind, whether or not this step goes to the team
+      this.moved = true;
     }
-    this.reordered = count >= this.minIslands && this.begins >= this.retryAt;
+    const at = this.begins++;
+    this.reordered = count >= this.minIslands && at >= this.retryAt;
     if (this.reordered) {
       this.reordered = this.islands.split(coloring.order, count, contacts, bodies, self.order);
       // one pile: it will be one pile for a while yet, and each try costs a union-find
-      if (!this.reordered) this.retryAt = this.begins + SPLIT_RETRY_STEPS;
+      if (!this.reordered) this.retryAt = at + 1 + SPLIT_RETRY_STEPS;
     }
-    this.begins++;
     if (!this.reordered) {
       if (count < this.minConstraints) return false;
       copyOrder(coloring.order, count, self.order);
@@ -254,6 +254,7 @@ export class SolverTeam implements ContactTeam {
     self.shapes = shapes;
     const owners = this.bound.owners;
     // every owner's columns are shared, whichever moved
+    let moved = this.moved;
     moved = shareColumns(cc, TEAM_COLUMNS.cc, owners.cc) || moved;
     moved = shareColumns(contacts, TEAM_COLUMNS.contacts, owners.contacts) || moved;
     moved = shareColumns(shapes, TEAM_COLUMNS.shapes, owners.shapes) || moved;
@@ -366,7 +367,13 @@ export class SolverTeam implements ContactTeam {
     this.self.params[Param.FRICTION_MIN] = frictionMin ? 1 : 0;
     control[Control.HEAVY] = 0;
     this.run(Pass.PREPARE);
-    return control[Control.HEAVY] === 1;
+    const heavy = control[Control.HEAVY] === 1;
+    if (heavy && this.reordered) {
+      // the step falls back to one thread (see ContactTeam.reordered): no island split for a while
+      this.retryAt = this.begins + SPLIT_RETRY_STEPS;
+      this.islandSteps--;
+    }
+    return heavy;
   }
 
   warmStart(): void {
