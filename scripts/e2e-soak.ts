@@ -31,13 +31,13 @@ report(`# ${new Date().toISOString()}: ${runs} runs, CPU throttle ${throttle}`);
 for (let i = 1; i <= runs; i++) {
   const start = Date.now();
   const run = spawnSync('npx', ['vitest', 'run', '--config', 'vitest.e2e.config.ts'], {
-    env: { ...process.env, E2E_CPU_THROTTLE: String(throttle) },
+    env: { ...process.env, E2E_CPU_THROTTLE: String(throttle), NO_COLOR: '1' },
     encoding: 'utf8',
     maxBuffer: 64 * 1024 * 1024,
   });
   const seconds = ((Date.now() - start) / 1000).toFixed(0);
   const output = `${run.stdout}${run.stderr}`;
-  const tests = /Tests\s+([^\n]+)/.exec(output.replace(/\x1b\[[0-9;]*m/g, ''))?.[1]?.trim() ?? '?';
+  const tests = /Tests\s+([^\n]+)/.exec(output)?.[1]?.trim() ?? '?';
   report(`run ${i}/${runs}: ${run.status === 0 ? 'passed' : 'FAILED'} in ${seconds} s (${tests})`);
   if (run.status !== 0) {
     console.log(output);
