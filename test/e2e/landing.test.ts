@@ -341,6 +341,9 @@ describe('the layout', () => {
     { width: 1280, height: 800 },
     { width: 1024, height: 600 },
     { width: 390, height: 844 },
+    // a phone on its side and a 4K monitor
+    { width: 844, height: 390 },
+    { width: 3840, height: 2160 },
   ];
   const demoView = {
     boxes: [
@@ -370,7 +373,7 @@ describe('the layout', () => {
   };
 
   for (const size of sizes) {
-    it(`has no overlaps and no word-by-word wrapping at ${size.width}×${size.height}`, async () => {
+    it(`has no overlaps, no word-by-word wrapping and a stage that fills the window at ${size.width}×${size.height}`, async () => {
       const open = await openLanding(browser.context, url);
       try {
         await open.page.setViewportSize(size);
@@ -391,6 +394,12 @@ describe('the layout', () => {
             (demo) => (window as unknown as LandingWindow).gallery.demo === demo,
             id,
           );
+          // the canvas takes the space the controls leave: a good part of any window, phone to 4K
+          // (1024×600 with its readout and description lines is the tightest, about half)
+          if (await open.page.isVisible('#code-panel')) await open.page.click('#code-close');
+          const stage = await open.page.locator('#stage').boundingBox();
+          const share = (stage!.width * stage!.height) / (size.width * size.height);
+          expect(share, `${id}: share of the window the stage takes`).toBeGreaterThan(0.45);
           if (!(await open.page.isVisible('#code-panel'))) await open.page.click('#btn-code');
           const view = await measureLayout(open.page, demoView);
           expect(view.measured, id).toBeGreaterThan(15);
