@@ -78,11 +78,14 @@ function session(name: BrowserName, driver: Driver): BrowserSession {
   return { name, version: driver.version, call, close: () => driver.close() };
 }
 
+const JS_FLAGS = process.env.JS_FLAGS;
+
 async function launchChromium(): Promise<Driver> {
   const browser = await chromium.launch({
     executablePath: CHROMIUM,
     headless: true,
-    args: ['--no-sandbox', '--disable-gpu'],
+    // JS_FLAGS: V8 flags for the page (--js-flags), to see how the JIT's tiers shape the cold start
+    args: ['--no-sandbox', '--disable-gpu', ...(JS_FLAGS ? [`--js-flags=${JS_FLAGS}`] : [])],
   });
   return {
     version: browser.version(),
