@@ -26,15 +26,20 @@ interface HillLayer {
   color: string;
 }
 const HILL_PERIOD = 64;
+/**
+ * where the hills' shapes end below: inside the grass band (-0.1 to 0.18 m), which with the dirt
+ * under it covers everything lower, so nothing is painted there only to be painted over
+ */
+const HILL_FOOT = -0.05;
 
 function hillPath(base: number, a1: number, a2: number, phase: number): Path2D {
   const path = new Path2D();
-  path.moveTo(0, -200);
+  path.moveTo(0, HILL_FOOT);
   for (let x = 0; x <= HILL_PERIOD; x += 1) {
     const t = (x / HILL_PERIOD) * 2 * Math.PI;
     path.lineTo(x, base + a1 * Math.sin(t + phase) + a2 * Math.sin(3 * t + phase * 2));
   }
-  path.lineTo(HILL_PERIOD, -200);
+  path.lineTo(HILL_PERIOD, HILL_FOOT);
   path.closePath();
   return path;
 }
