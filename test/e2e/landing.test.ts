@@ -400,7 +400,7 @@ describe('the layout', () => {
           const stage = await open.page.locator('#stage').boundingBox();
           const share = (stage!.width * stage!.height) / (size.width * size.height);
           expect(share, `${id}: share of the window the stage takes`).toBeGreaterThan(0.45);
-          if (!(await open.page.isVisible('#code-panel'))) await open.page.click('#btn-code');
+          await open.page.click('#btn-code');
           const view = await measureLayout(open.page, demoView);
           expect(view.measured, id).toBeGreaterThan(15);
           expect(view.overlaps, id).toEqual([]);
