@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { buildNetwork, NETWORK_KINDS, runNetwork } from '../helpers/joint-networks';
+import { letRunnerTalk } from './run-property';
 import { firstSeed, fuzzing } from './settings';
 
 /**
@@ -16,7 +17,7 @@ const first = fuzzing && env.FULCRUM_FUZZ_SEED !== undefined ? firstSeed : 0;
 
 describe('random joint networks', () => {
   for (const kind of NETWORK_KINDS) {
-    it(`${kind}: ${seeds} seed${seeds > 1 ? 's' : ''} x ${steps} steps stay finite and below the speed limit`, () => {
+    it(`${kind}: ${seeds} seed${seeds > 1 ? 's' : ''} x ${steps} steps stay finite and below the speed limit`, async () => {
       const failures: string[] = [];
       let fastest = 0;
       for (let seed = first; seed < first + seeds; seed++) {
@@ -24,6 +25,7 @@ describe('random joint networks', () => {
         fastest = Math.max(fastest, run.maxSpeed);
         if (run.nanStep >= 0 || run.atClamp > 0)
           failures.push(`seed ${seed}: NaN at step ${run.nanStep}, ${run.atClamp} bodies at the speed limit`);
+        await letRunnerTalk();
       }
       if (fuzzing)
         console.log(

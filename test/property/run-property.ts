@@ -23,8 +23,7 @@ export async function checkProperty<T>(
       // a case that never ends (a hang) is found in this file
       if (lastCaseFile) writeFileSync(lastCaseFile, `${JSON.stringify([value], exactNumbers)}\n`);
       predicate(value);
-      // let the test runner's worker talk to the main process now and then (its calls time out)
-      if (++cases % 25 === 0) await new Promise((resolve) => setImmediate(resolve));
+      if (++cases % 25 === 0) await letRunnerTalk();
     });
     const details = await fc.check(property, { seed, numRuns });
     if (details.failed) {
@@ -43,6 +42,14 @@ export async function checkProperty<T>(
     }
   }
   if (failures.length > 0) throw new Error(failures.join('\n\n'));
+}
+
+/**
+ * Gives the event loop a turn, so that the test runner's worker can talk to the main process: its calls
+ * time out ("Timeout calling onTaskUpdate", a failed run) when a test holds the thread for a minute.
+ */
+export function letRunnerTalk(): Promise<void> {
+  return new Promise((resolve) => setImmediate(resolve));
 }
 
 /** JSON of the case with every number exact (-0, NaN and the infinities as strings); undefined fields left out */
